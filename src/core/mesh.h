@@ -1,0 +1,80 @@
+#pragma once
+// The core mesh: planar triangles of one order p, with the CAD/discrete entities
+// and physical groups they are classified on. Pure data over Eigen; the Gmsh
+// adapter (src/gmsh/) fills it from, and writes it back to, a Gmsh model.
+//
+// Node ordering follows Gmsh (see element/reference_nodes.h): a triangle of
+// order p lists its 3 corners, the p-1 nodes of edges 0-1, 1-2, 2-0 (each from
+// its first to its second corner), then its interior nodes recursively as a
+// triangle of order p-3. A line of order p lists its 2 end nodes, then its p-1
+// interior nodes from the first end to the second.
+#include <Eigen/Core>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace homesh {
+
+/// Where a node lives: on a model point (dim 0), curve (dim 1) or surface (dim 2).
+/// `u` is the parametric coordinate on the curve for dim 1 nodes (NaN if unknown).
+struct NodeClass {
+  int dim = 2;
+  int tag = -1;
+  double u = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// A model entity of dimension 0, 1 or 2 with the tags of its boundary entities
+/// (signed for orientation, as Gmsh's getBoundary returns them).
+struct Entity {
+  int dim = 0;
+  int tag = -1;
+  std::vector<int> boundary;
+};
+
+/// A named physical group: dimension, tag, name and the entity tags it gathers.
+struct PhysicalGroup {
+  int dim = 0;
+  int tag = -1;
+  std::string name;
+  std::vector<int> entities;
+};
+
+/// Triangles, boundary lines and model points of one order, with classification.
+struct Mesh {
+  int order = 1;
+
+  /// 2 by #nodes: node coordinates (the plane z = 0).
+  Eigen::Matrix2Xd x;
+  /// #nodes classification of each node.
+  std::vector<NodeClass> node_class;
+
+  /// (p+1)(p+2)/2 by #triangles: node indices of each triangle, Gmsh order.
+  Eigen::MatrixXi tri;
+  /// #triangles tag of the surface each triangle belongs to.
+  std::vector<int> tri_entity;
+
+  /// p+1 by #lines: node indices of each boundary/embedded line, Gmsh order.
+  Eigen::MatrixXi line;
+  /// #lines tag of the curve each line belongs to.
+  std::vector<int> line_entity;
+
+  /// Node index and entity tag of each point element (Gmsh type 15).
+  std::vector<int> point_node;
+  std::vector<int> point_entity;
+
+  /// Model entities of dimension 0..2 and physical groups.
+  std::vector<Entity> entities;
+  std::vector<PhysicalGroup> physicals;
+
+  int num_nodes() const { return static_cast<int>(x.cols()); }
+  int num_triangles() const { return static_cast<int>(tri.cols()); }
+  int num_lines() const { return static_cast<int>(line.cols()); }
+
+  /// 2 by (p+1)(p+2)/2 coordinates of the nodes of triangle e, Gmsh order.
+  Eigen::Matrix2Xd triangle_nodes(int e) const;
+};
+
+/// Number of nodes of a triangle of order p: (p+1)(p+2)/2.
+constexpr int triangle_node_count(int p) { return (p + 1) * (p + 2) / 2; }
+
+}  // namespace homesh
