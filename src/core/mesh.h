@@ -74,6 +74,9 @@ struct Mesh {
   Eigen::Matrix2Xd triangle_nodes(int e) const;
 };
 
+/// Highest element order homesh supports (the basis stays accurate to ~1e-10).
+constexpr int kMaxOrder = 10;
+
 /// Number of nodes of a triangle of order p: (p+1)(p+2)/2.
 constexpr int triangle_node_count(int p) { return (p + 1) * (p + 2) / 2; }
 

@@ -1,0 +1,174 @@
+#include "gmsh/read_model.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/error.h"
+
+namespace homesh::gmsh_adapter {
+namespace {
+
+struct ElementBlock {
+  int entity;
+  std::vector<std::size_t> node_tags;
+};
+
+// Classification and entity structure: entities, their boundaries, physicals.
+void read_entities(Mesh& m) {
+  gmsh::vectorpair dim_tags;
+  gmsh::model::getEntities(dim_tags);
+  for (const auto& [dim, tag] : dim_tags) {
+    if (dim > 2) continue;
+    Entity e{dim, tag, {}};
+    if (dim > 0) {
+      gmsh::vectorpair bnd;
+      gmsh::model::getBoundary({{dim, tag}}, bnd, false, true, false);
+      for (const auto& b : bnd) e.boundary.push_back(b.second);
+    }
+    m.entities.push_back(e);
+  }
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  for (const auto& [dim, tag] : groups) {
+    if (dim > 2) continue;
+    PhysicalGroup g{dim, tag, {}, {}};
+    gmsh::model::getPhysicalName(dim, tag, g.name);
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, g.entities);
+    m.physicals.push_back(g);
+  }
+}
+
+}  // namespace
+
+bool model_has_mesh() {
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 2);
+  return !types.empty();
+}
+
+bool model_has_cad() {
+  gmsh::vectorpair dim_tags;
+  gmsh::model::getEntities(dim_tags);
+  for (const auto& [dim, tag] : dim_tags) {
+    if (dim == 0) continue;  // model points read from a .msh are typed "Point" too
+    std::string type;
+    gmsh::model::getType(dim, tag, type);
+    if (type.rfind("Discrete", 0) != 0) return true;
+  }
+  return false;
+}
+
+Mesh read_model(const std::string& source) {
+  Mesh m;
+  read_entities(m);
+
+  std::vector<int> types3;
+  gmsh::model::mesh::getElementTypes(types3, 3);
+  if (!types3.empty())
+    throw Error(source + ": has 3D elements; homesh meshes planar 2D triangle meshes");
+
+  // Nodes, entity by entity, so each node knows its classification.
+  std::vector<std::pair<std::size_t, NodeClass>> tagged;
+  std::vector<double> xyz;
+  for (const Entity& e : m.entities) {
+    std::vector<std::size_t> tags;
+    std::vector<double> coord, param;
+    gmsh::model::mesh::getNodes(tags, coord, param, e.dim, e.tag, false, true);
+    const bool has_u = e.dim == 1 && param.size() == tags.size();
+    for (std::size_t i = 0; i < tags.size(); ++i) {
+      NodeClass c{e.dim, e.tag, has_u ? param[i] : std::numeric_limits<double>::quiet_NaN()};
+      tagged.emplace_back(tags[i], c);
+      xyz.insert(xyz.end(), coord.begin() + 3 * i, coord.begin() + 3 * i + 3);
+    }
+  }
+  std::vector<std::size_t> perm(tagged.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = i;
+  std::sort(perm.begin(), perm.end(),
+            [&](std::size_t a, std::size_t b) { return tagged[a].first < tagged[b].first; });
+
+  const std::size_t max_tag = tagged.empty() ? 0 : tagged[perm.back()].first;
+  std::vector<int> index_of(max_tag + 1, -1);
+  m.x.resize(2, static_cast<Eigen::Index>(perm.size()));
+  m.node_class.resize(perm.size());
+  double extent = 0, zmax = 0;
+  for (std::size_t k = 0; k < perm.size(); ++k) {
+    const std::size_t i = perm[k];
+    index_of[tagged[i].first] = static_cast<int>(k);
+    m.x(0, k) = xyz[3 * i];
+    m.x(1, k) = xyz[3 * i + 1];
+    m.node_class[k] = tagged[i].second;
+    extent = std::max({extent, std::abs(xyz[3 * i]), std::abs(xyz[3 * i + 1])});
+    zmax = std::max(zmax, std::abs(xyz[3 * i + 2]));
+  }
+  if (zmax > 1e-10 * std::max(1.0, extent))
+    throw Error(source + ": nodes lie off the plane z = 0 (|z| up to " + std::to_string(zmax) +
+                "); homesh meshes planar 2D domains");
+
+  // Elements, entity by entity; all 1D and 2D elements must share one order.
+  int order = -1;
+  auto take = [&](int dim, int tag, int type, const std::vector<std::size_t>& nodes,
+                  std::vector<ElementBlock>& blocks) {
+    std::string name;
+    int edim, eorder, num_nodes, num_primary;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(type, name, edim, eorder, num_nodes, local,
+                                            num_primary);
+    const bool ok = (dim == 0 && type == 15) ||
+                    (dim == 1 && name.rfind("Line", 0) == 0) ||
+                    (dim == 2 && name.rfind("Triangle", 0) == 0 &&
+                     num_nodes == triangle_node_count(eorder));
+    if (!ok)
+      throw Error(source + ": has elements of type '" + name + "' (Gmsh type " +
+                  std::to_string(type) + ") on entity (" + std::to_string(dim) + ", " +
+                  std::to_string(tag) + "); homesh needs complete triangles and lines");
+    if (dim > 0) {
+      if (order >= 0 && eorder != order)
+        throw Error(source + ": mixes element orders " + std::to_string(order) + " and " +
+                    std::to_string(eorder) + "; homesh needs one order throughout");
+      order = eorder;
+    }
+    blocks.push_back({tag, nodes});
+  };
+  std::vector<ElementBlock> points, lines, tris;
+  for (const Entity& e : m.entities) {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> etags, enodes;
+    gmsh::model::mesh::getElements(types, etags, enodes, e.dim, e.tag);
+    for (std::size_t t = 0; t < types.size(); ++t)
+      take(e.dim, e.tag, types[t], enodes[t], e.dim == 0 ? points : e.dim == 1 ? lines : tris);
+  }
+  if (tris.empty()) throw Error(source + ": has no triangles (no 2D mesh)");
+  m.order = order;
+
+  auto node_index = [&](std::size_t tag) {
+    const int i = tag < index_of.size() ? index_of[tag] : -1;
+    if (i < 0) throw Error(source + ": element refers to unknown node " + std::to_string(tag));
+    return i;
+  };
+  auto fill = [&](const std::vector<ElementBlock>& blocks, int per, Eigen::MatrixXi& conn,
+                  std::vector<int>& entity) {
+    std::size_t count = 0;
+    for (const auto& b : blocks) count += b.node_tags.size() / per;
+    conn.resize(per, static_cast<Eigen::Index>(count));
+    entity.clear();
+    Eigen::Index col = 0;
+    for (const auto& b : blocks)
+      for (std::size_t k = 0; k < b.node_tags.size() / per; ++k, ++col) {
+        for (int i = 0; i < per; ++i) conn(i, col) = node_index(b.node_tags[k * per + i]);
+        entity.push_back(b.entity);
+      }
+  };
+  fill(tris, triangle_node_count(order), m.tri, m.tri_entity);
+  fill(lines, order + 1, m.line, m.line_entity);
+  for (const auto& b : points)
+    for (std::size_t tag : b.node_tags) {
+      m.point_node.push_back(node_index(tag));
+      m.point_entity.push_back(b.entity);
+    }
+  return m;
+}
+
+}  // namespace homesh::gmsh_adapter

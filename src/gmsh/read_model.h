@@ -1,0 +1,23 @@
+#pragma once
+// Gmsh model -> core mesh.
+#include <string>
+
+#include "core/mesh.h"
+
+namespace homesh::gmsh_adapter {
+
+/// Reads the mesh of the current Gmsh model: entities of dimension 0..2 with
+/// their boundaries, physical groups, nodes with their classification, point,
+/// line and triangle elements. Node i of the result is the i-th node in
+/// increasing Gmsh tag order. Throws homesh::Error naming `source` if the model
+/// holds no triangles, 3D elements, non-triangle 2D elements, elements of mixed
+/// orders, or nodes off the plane z = 0.
+Mesh read_model(const std::string& source);
+
+/// True if the current model has a 2D mesh (any element of dimension 2).
+bool model_has_mesh();
+
+/// True if some curve or surface of the current model is CAD (not discrete).
+bool model_has_cad();
+
+}  // namespace homesh::gmsh_adapter

@@ -1,0 +1,93 @@
+#include "gmsh/write_model.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/error.h"
+
+namespace homesh::gmsh_adapter {
+namespace {
+
+void ensure_entities(const Mesh& m) {
+  gmsh::vectorpair existing;
+  gmsh::model::getEntities(existing);
+  std::set<std::pair<int, int>> have(existing.begin(), existing.end());
+  std::vector<Entity> missing;
+  for (const Entity& e : m.entities)
+    if (!have.count({e.dim, e.tag})) missing.push_back(e);
+  std::stable_sort(missing.begin(), missing.end(),
+                   [](const Entity& a, const Entity& b) { return a.dim < b.dim; });
+  for (const Entity& e : missing) gmsh::model::addDiscreteEntity(e.dim, e.tag, e.boundary);
+
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  std::set<std::pair<int, int>> have_groups(groups.begin(), groups.end());
+  for (const PhysicalGroup& g : m.physicals) {
+    if (have_groups.count({g.dim, g.tag})) continue;
+    gmsh::model::addPhysicalGroup(g.dim, g.entities, g.tag);
+    if (!g.name.empty()) gmsh::model::setPhysicalName(g.dim, g.tag, g.name);
+  }
+}
+
+void add_nodes(const Mesh& m) {
+  std::map<std::pair<int, int>, std::vector<int>> by_entity;
+  for (int i = 0; i < m.num_nodes(); ++i)
+    by_entity[{m.node_class[i].dim, m.node_class[i].tag}].push_back(i);
+  for (const auto& [entity, nodes] : by_entity) {
+    std::vector<std::size_t> tags;
+    std::vector<double> coord, param;
+    bool all_u = entity.first == 1;
+    for (int i : nodes) {
+      tags.push_back(static_cast<std::size_t>(i) + 1);
+      coord.insert(coord.end(), {m.x(0, i), m.x(1, i), 0.0});
+      all_u = all_u && std::isfinite(m.node_class[i].u);
+      param.push_back(m.node_class[i].u);
+    }
+    if (!all_u) param.clear();
+    gmsh::model::mesh::addNodes(entity.first, entity.second, tags, coord, param);
+  }
+}
+
+// Adds the columns of `conn` grouped by entity; column k gets tag first + k.
+void add_elements(int type, const Eigen::MatrixXi& conn,
+                  const std::vector<int>& entity, std::size_t first) {
+  std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> by_entity;
+  for (Eigen::Index k = 0; k < conn.cols(); ++k) {
+    auto& [tags, nodes] = by_entity[entity[k]];
+    tags.push_back(first + static_cast<std::size_t>(k));
+    for (Eigen::Index i = 0; i < conn.rows(); ++i)
+      nodes.push_back(static_cast<std::size_t>(conn(i, k)) + 1);
+  }
+  for (const auto& [tag, data] : by_entity) {
+    gmsh::model::mesh::addElementsByType(tag, type, data.first, data.second);
+  }
+}
+
+}  // namespace
+
+ModelTags write_model(const Mesh& m) {
+  gmsh::model::mesh::clear();
+  ensure_entities(m);
+  add_nodes(m);
+
+  ModelTags tags;
+  if (!m.point_node.empty()) {
+    Eigen::MatrixXi conn(1, static_cast<Eigen::Index>(m.point_node.size()));
+    for (std::size_t k = 0; k < m.point_node.size(); ++k) conn(0, k) = m.point_node[k];
+    add_elements(15, conn, m.point_entity, 1);
+  }
+  tags.first_line = 1 + m.point_node.size();
+  tags.first_triangle = tags.first_line + static_cast<std::size_t>(m.num_lines());
+  if (m.num_lines() > 0)
+    add_elements(gmsh::model::mesh::getElementType("Line", m.order), m.line, m.line_entity,
+                 tags.first_line);
+  add_elements(gmsh::model::mesh::getElementType("Triangle", m.order), m.tri, m.tri_entity,
+               tags.first_triangle);
+  return tags;
+}
+
+}  // namespace homesh::gmsh_adapter

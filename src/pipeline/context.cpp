@@ -1,0 +1,12 @@
+#include "pipeline/context.h"
+
+#include "core/error.h"
+
+namespace homesh {
+
+Mesh& Context::require_mesh(const std::string& stage) {
+  if (!mesh) throw Error("stage '" + stage + "': " + input + " has no mesh (add -m mesh first)");
+  return *mesh;
+}
+
+}  // namespace homesh

@@ -1,0 +1,26 @@
+#pragma once
+// The state a pipeline of stages works on: the input's name, whether the
+// current Gmsh model carries CAD, the core mesh (the source of truth once
+// read), the fields that become views, and the log.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/field.h"
+#include "core/mesh.h"
+#include "pipeline/log.h"
+
+namespace homesh {
+
+struct Context {
+  std::string input;
+  bool has_cad = false;
+  std::optional<Mesh> mesh;
+  std::vector<Field> fields;
+  Log log;
+
+  /// The mesh, or homesh::Error telling `stage` needs one.
+  Mesh& require_mesh(const std::string& stage);
+};
+
+}  // namespace homesh

@@ -1,0 +1,95 @@
+#include "pipeline/run_pipeline.h"
+
+#include <gmsh.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include "core/error.h"
+#include "gmsh/gmsh_call.h"
+#include "gmsh/read_model.h"
+#include "gmsh/views.h"
+#include "gmsh/write_model.h"
+#include "gmsh/write_msh.h"
+#include "pipeline/stage_registry.h"
+
+namespace homesh {
+namespace {
+
+std::string extension(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  return ext;
+}
+
+void check_readable(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) throw Error(path + ": " + std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw Error(path + ": not a regular file");
+  if (st.st_size == 0) throw Error(path + ": empty file");
+  std::ifstream in(path);
+  if (!in) throw Error(path + ": cannot be read");
+}
+
+}  // namespace
+
+void load_input(const std::string& path, Context& ctx) {
+  static const std::vector<std::string> kinds = {"geo", "step", "stp", "brep",
+                                                 "iges", "igs", "msh"};
+  const std::string ext = extension(path);
+  if (std::find(kinds.begin(), kinds.end(), ext) == kinds.end())
+    throw Error(path + ": unknown input kind '." + ext +
+                "' (expected .geo, .step, .stp, .brep, .iges, .igs or .msh)");
+  check_readable(path);
+  ctx.input = path;
+  gmsh_adapter::gmsh_call(path, [&] {
+    gmsh::clear();
+    gmsh::open(path);
+  });
+  ctx.has_cad = gmsh_adapter::model_has_cad();
+  if (gmsh_adapter::model_has_mesh()) {
+    ctx.mesh = gmsh_adapter::read_model(path);
+  } else if (ext == "msh") {
+    throw Error(path + ": has no triangles (no 2D mesh)");
+  } else if (!ctx.has_cad) {
+    throw Error(path + ": defines no geometry and no mesh");
+  }
+}
+
+void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
+  // Resolve every stage and option first, so a typo fails before any work.
+  std::vector<std::pair<const Stage*, Options>> plan;
+  for (const StageCall& c : calls) {
+    const Stage& s = stage(c.name);
+    plan.emplace_back(&s, Options(s.name, s.options, c.given));
+  }
+  const bool meshes = std::any_of(calls.begin(), calls.end(),
+                                  [](const StageCall& c) { return c.name == "mesh"; });
+  if (!ctx.mesh && !meshes) {
+    ctx.log.info("{} has no mesh: meshing it with the mesh stage's defaults", ctx.input);
+    const Stage& m = stage("mesh");
+    m.run(ctx, Options(m.name, m.options, {}));
+  }
+  for (auto& [s, options] : plan) s->run(ctx, options);
+}
+
+void write_output(const std::string& path, const std::string& provenance, Context& ctx) {
+  const Mesh& m = ctx.require_mesh("output");
+  if (extension(path) != "msh") throw Error(path + ": output must be a .msh file");
+  std::vector<int> views;
+  gmsh_adapter::gmsh_call("writing " + path, [&] {
+    const auto tags = gmsh_adapter::write_model(m);
+    views = gmsh_adapter::add_views(ctx.fields, tags);
+  });
+  gmsh_adapter::write_msh(path, views, provenance);
+  ctx.log.info("wrote {} (order {}, {} triangles, {} views)", path, m.order, m.num_triangles(),
+               views.size());
+}
+
+}  // namespace homesh

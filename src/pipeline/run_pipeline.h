@@ -1,0 +1,26 @@
+#pragma once
+// The CLI's work: load the input through Gmsh, run each stage in turn, write
+// the output `.msh` (with its views and the command line that made it).
+#include <string>
+#include <vector>
+
+#include "pipeline/context.h"
+#include "pipeline/options.h"
+
+namespace homesh {
+
+/// Opens `path` (.geo, .step/.stp, .brep, .iges/.igs, .msh) into the current
+/// Gmsh model and reads the mesh it carries, if any. Throws homesh::Error
+/// naming `path` if it is missing, unreadable, empty, of an unknown kind, or
+/// Gmsh fails on it.
+void load_input(const std::string& path, Context& ctx);
+
+/// Runs `calls` on `ctx` in order. A CAD input without a mesh is first meshed
+/// with the `mesh` stage's defaults unless some call is `mesh`.
+void run_stages(const std::vector<StageCall>& calls, Context& ctx);
+
+/// Writes ctx's mesh and fields into the current model and to `path` (MSH 4.1,
+/// plus `path.opt`), recording `provenance` in the file.
+void write_output(const std::string& path, const std::string& provenance, Context& ctx);
+
+}  // namespace homesh

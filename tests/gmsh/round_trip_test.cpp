@@ -1,0 +1,130 @@
+#include <gmsh.h>
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "gmsh/read_model.h"
+#include "gmsh/views.h"
+#include "gmsh/write_model.h"
+#include "gmsh/write_msh.h"
+#include "../support/gmsh_session.h"
+
+using namespace homesh;
+
+namespace {
+
+// Coordinates agree to `tol` (0 in memory; Gmsh writes 16 significant digits).
+void require_same(const Mesh& a, const Mesh& b, double tol = 0) {
+  REQUIRE(a.order == b.order);
+  REQUIRE(a.x.cols() == b.x.cols());
+  REQUIRE((a.x - b.x).cwiseAbs().maxCoeff() <= tol);
+  REQUIRE(a.tri == b.tri);
+  REQUIRE(a.tri_entity == b.tri_entity);
+  REQUIRE(a.line == b.line);
+  REQUIRE(a.line_entity == b.line_entity);
+  REQUIRE(a.point_node == b.point_node);
+  REQUIRE(a.point_entity == b.point_entity);
+  REQUIRE(a.node_class.size() == b.node_class.size());
+  for (std::size_t i = 0; i < a.node_class.size(); ++i) {
+    REQUIRE(a.node_class[i].dim == b.node_class[i].dim);
+    REQUIRE(a.node_class[i].tag == b.node_class[i].tag);
+  }
+  REQUIRE(a.entities.size() == b.entities.size());
+  for (std::size_t i = 0; i < a.entities.size(); ++i) {
+    REQUIRE(a.entities[i].dim == b.entities[i].dim);
+    REQUIRE(a.entities[i].tag == b.entities[i].tag);
+  }
+  REQUIRE(a.physicals.size() == b.physicals.size());
+  for (std::size_t i = 0; i < a.physicals.size(); ++i) {
+    REQUIRE(a.physicals[i].name == b.physicals[i].name);
+    REQUIRE(a.physicals[i].dim == b.physicals[i].dim);
+    REQUIRE(a.physicals[i].entities == b.physicals[i].entities);
+  }
+}
+
+std::size_t gmsh_count(int dim) {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodes;
+  gmsh::model::mesh::getElements(types, tags, nodes, dim);
+  std::size_t n = 0;
+  for (const auto& t : tags) n += t.size();
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("model -> core -> model -> .msh -> model keeps everything, p = 1..6", "[gmsh]") {
+  for (int p = 1; p <= 6; ++p) {
+    CAPTURE(p);
+    test::GmshSession session;
+    test::make_plate_with_hole(p);
+    std::vector<std::size_t> node_tags;
+    std::vector<double> coord, param;
+    gmsh::model::mesh::getNodes(node_tags, coord, param);
+    const std::size_t lines = gmsh_count(1), tris = gmsh_count(2), points = gmsh_count(0);
+
+    const Mesh m1 = gmsh_adapter::read_model("plate");
+    REQUIRE(m1.order == p);
+    REQUIRE(static_cast<std::size_t>(m1.num_nodes()) == node_tags.size());
+    REQUIRE(static_cast<std::size_t>(m1.num_triangles()) == tris);
+    REQUIRE(static_cast<std::size_t>(m1.num_lines()) == lines);
+    REQUIRE(m1.point_node.size() == points);
+    REQUIRE(m1.tri.rows() == (p + 1) * (p + 2) / 2);
+    REQUIRE(m1.physicals.size() == 2);
+
+    const auto tags = gmsh_adapter::write_model(m1);
+    require_same(m1, gmsh_adapter::read_model("plate"));
+
+    Field f{"node index", Field::Kind::ElementNode, m1.tri.cast<double>()};
+    const auto views = gmsh_adapter::add_views({f}, tags);
+    const std::string path = "/tmp/homesh_round_trip_" + std::to_string(p) + ".msh";
+    gmsh_adapter::write_msh(path, views, "test provenance");
+
+    gmsh::clear();
+    gmsh::open(path);
+    const Mesh m3 = gmsh_adapter::read_model(path);
+    require_same(m1, m3, 1e-15);
+    std::vector<int> view_tags;
+    gmsh::view::getTags(view_tags);
+    REQUIRE(view_tags.size() == 1);
+    std::string type;
+    std::vector<std::size_t> element_tags;
+    std::vector<std::vector<double>> data;
+    double time;
+    int components;
+    gmsh::view::getModelData(view_tags[0], 0, type, element_tags, data, time, components);
+    REQUIRE(type == "ElementNodeData");
+    REQUIRE(element_tags.size() == static_cast<std::size_t>(m1.num_triangles()));
+    for (std::size_t k = 0; k < element_tags.size(); ++k) {
+      const auto e = static_cast<Eigen::Index>(element_tags[k] - tags.first_triangle);
+      REQUIRE(data[k].size() == static_cast<std::size_t>(m1.tri.rows()));
+      for (Eigen::Index i = 0; i < m1.tri.rows(); ++i) REQUIRE(data[k][i] == m1.tri(i, e));
+    }
+    std::remove(path.c_str());
+    std::remove((path + ".opt").c_str());
+  }
+}
+
+TEST_CASE("write_msh records provenance and a sidecar that adapts every view", "[gmsh]") {
+  test::GmshSession session;
+  test::make_plate_with_hole(2);
+  const Mesh m = gmsh_adapter::read_model("plate");
+  const auto tags = gmsh_adapter::write_model(m);
+  Field a{"a", Field::Kind::Element, Eigen::MatrixXd::Ones(1, m.num_triangles())};
+  Field b{"b", Field::Kind::Element, Eigen::MatrixXd::Zero(1, m.num_triangles())};
+  const std::string path = "/tmp/homesh_provenance.msh";
+  gmsh_adapter::write_msh(path, gmsh_adapter::add_views({a, b}, tags), "homesh x -m y");
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(text.find("$HomeshProvenance\nhomesh x -m y\n$EndHomeshProvenance") != std::string::npos);
+  REQUIRE(text.find("$MeshFormat\n4.1") == 0);
+  std::ifstream opt(path + ".opt");
+  std::string options((std::istreambuf_iterator<char>(opt)), std::istreambuf_iterator<char>());
+  REQUIRE(options == gmsh_adapter::sidecar_options(2));
+  REQUIRE(options.find("View[1].AdaptVisualizationGrid = 1;") != std::string::npos);
+  REQUIRE(options.find("View[2]") == std::string::npos);
+  std::remove(path.c_str());
+  std::remove((path + ".opt").c_str());
+}
