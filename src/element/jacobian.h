@@ -1,8 +1,10 @@
 #pragma once
 // The Jacobian of the map from the reference triangle to a physical element
 // (thesis Eq 3.3): J = dx/d(u,v) = X * dN^T, with X the 2 by n node coordinates
-// and dN the 2 by n basis derivatives at the point.
+// and dN the 2 by n basis derivatives at the point. Eigen/LU comes with it for
+// J.determinant(), the thesis' |J|.
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 namespace homesh {
 

@@ -1,6 +1,8 @@
 #pragma once
-// Quadrature on the reference triangle (0,0), (1,0), (0,1).
+// Quadrature on the reference triangle (0,0), (1,0), (0,1) and on the line [0, 1].
 #include <Eigen/Core>
+
+#include "element/gauss_jacobi.h"
 
 namespace homesh {
 
@@ -10,11 +12,20 @@ struct QuadratureRule {
   Eigen::VectorXd weights;
 };
 
-/// A rule with positive weights integrating every polynomial of total degree
-/// <= `degree` exactly (degree >= 0).
+/// A rule with positive weights and points strictly inside the triangle,
+/// integrating every polynomial of total degree <= `degree` (>= 0) exactly.
+///
+/// Conical product (Stroud 1971, "Approximate calculation of multiple
+/// integrals", Sec 2.7): with the collapsed coordinates (u, v) = (s (1 - t), t),
+/// du dv = (1 - t) ds dt, so
+///   int_T f du dv = int_0^1 int_0^1 f(s (1 - t), t) (1 - t) ds dt,
+/// integrated by the n-point Gauss-Legendre rule in s and the n-point
+/// Gauss-Jacobi rule of weight (1 - t) in t, n = floor(degree / 2) + 1: u^a v^b
+/// becomes s^a (1 - t)^a t^b, of degree <= degree in s and in t. n^2 points.
 QuadratureRule triangle_quadrature(int degree);
 
-/// Gauss-Legendre rule on [0, 1] exact to `degree`: points and weights summing to 1.
-QuadratureRule line_quadrature(int degree);
+/// Gauss-Legendre rule on [0, 1] exact to `degree` (>= 0): floor(degree / 2) + 1
+/// increasing points, positive weights summing to 1.
+LineQuadratureRule line_quadrature(int degree);
 
 }  // namespace homesh
