@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# The README's test command: install what is missing, build, run every test.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$root/scripts/setup.sh"
+cd "${HOMESH_BUILD_DIR:-$root/build}"
+ctest --output-on-failure -j "$(nproc)"
