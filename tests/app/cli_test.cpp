@@ -1,0 +1,143 @@
+// Regression tests of the homesh command line: run it as a user does and
+// assert the numbers in its log and in the files it writes.
+#include <gmsh.h>
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <algorithm>
+#include <fstream>
+#include <regex>
+
+#include "../support/gmsh_session.h"
+#include "../support/run_command.h"
+
+using homesh::test::run_homesh;
+
+namespace {
+
+const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+
+bool exists(const std::string& path) { return std::ifstream(path).good(); }
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+int number_after(const std::string& text, const std::string& pattern) {
+  std::smatch m;
+  REQUIRE(std::regex_search(text, m, std::regex(pattern + R"(\s*(\d+))")));
+  return std::stoi(m[1]);
+}
+
+}  // namespace
+
+TEST_CASE("homesh --list and --help STAGE describe the stages", "[app]") {
+  auto r = run_homesh("--list");
+  REQUIRE(r.exit_code == 0);
+  for (const char* s : {"mesh", "order", "info"}) REQUIRE(r.output.find(s) != std::string::npos);
+  r = run_homesh("--help order");
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(std::regex_search(r.output, std::regex(R"(p\s+2\s+element order, 1 to 10)")));
+  r = run_homesh("--help");
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("INPUT") != std::string::npos);
+  REQUIRE(run_homesh("--help nosuch").exit_code != 0);
+}
+
+TEST_CASE("NACA-7526 mesh, order 4, info: the issue's command works end to end", "[app]") {
+  const std::string out = "/tmp/homesh_cli_naca.msh";
+  std::remove(out.c_str());
+  const auto r = run_homesh(geo + "naca.geo -m mesh -m order:p=4 -m info " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("order 4:") != std::string::npos);
+  REQUIRE(r.output.find("\"aerofoil\"") != std::string::npos);
+  REQUIRE(r.output.find("\"farfield\"") != std::string::npos);
+  const int nodes = number_after(r.output, "order 4:");
+  const int tris = number_after(r.output, R"(nodes,)");
+  REQUIRE(read(out).find("-m order:p=4 -m info") != std::string::npos);
+
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  std::vector<std::size_t> tags, elements, element_nodes;
+  std::vector<double> coord, param;
+  gmsh::model::mesh::getNodes(tags, coord, param);
+  REQUIRE(static_cast<int>(tags.size()) == nodes);
+  gmsh::model::mesh::getElementsByType(gmsh::model::mesh::getElementType("Triangle", 4), elements,
+                                       element_nodes);
+  REQUIRE(static_cast<int>(elements.size()) == tris);
+  REQUIRE(element_nodes.size() == 15 * elements.size());
+  // Every triangle of the written file is valid in Gmsh's own evaluation.
+  std::vector<double> local = {1.0 / 3, 1.0 / 3, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0}, jac, det, pts;
+  gmsh::model::mesh::getJacobians(gmsh::model::mesh::getElementType("Triangle", 4), local, jac,
+                                  det, pts);
+  REQUIRE(det.size() == 4 * elements.size());
+  REQUIRE(*std::min_element(det.begin(), det.end()) > 0);
+  std::remove(out.c_str());
+  std::remove((out + ".opt").c_str());
+}
+
+TEST_CASE("bad input gets a clear error naming it, non-zero exit and no output", "[app]") {
+  const std::string out = "/tmp/homesh_cli_bad.msh";
+  std::remove(out.c_str());
+  struct Case {
+    std::string args, message;
+  };
+  const std::string garbage = "/tmp/homesh_garbage.msh", empty = "/tmp/homesh_empty.geo";
+  std::ofstream(garbage) << "\x01\x02 this is not a mesh \xff\n";
+  std::ofstream(empty).close();
+  const std::vector<Case> cases = {
+      {"/tmp/does_not_exist.msh " + out, "/tmp/does_not_exist.msh: No such file"},
+      {empty + " " + out, empty + ": empty file"},
+      {garbage + " " + out, garbage},
+      {"/etc/hostname " + out, "unknown input kind"},
+      {geo + "plate_hole.geo -m order:p=0 " + out, "p=0: out of range [1, 10]"},
+      {geo + "plate_hole.geo -m order:p=50 " + out, "p=50: out of range [1, 10]"},
+      {geo + "plate_hole.geo -m order:p=nan " + out, "p=nan: not an integer"},
+      {geo + "plate_hole.geo -m curvee " + out, "unknown stage 'curvee'"},
+      {geo + "plate_hole.geo -m order:q=2 " + out, "unknown option 'q'"},
+      {geo + "plate_hole.geo -m mesh:size_max=-1 " + out, "size_max"},
+      {geo + "plate_hole.geo /nonexistent/dir/out.msh", "/nonexistent/dir/out.msh"},
+  };
+  for (const auto& c : cases) {
+    const auto r = run_homesh(c.args);
+    INFO(c.args << "\n" << r.output);
+    REQUIRE(r.exit_code != 0);
+    REQUIRE(r.output.find("homesh: error:") != std::string::npos);
+    REQUIRE(r.output.find(c.message) != std::string::npos);
+    REQUIRE_FALSE(exists(out));
+  }
+  std::remove(garbage.c_str());
+  std::remove(empty.c_str());
+}
+
+TEST_CASE("a failed run leaves the previous output untouched", "[app]") {
+  const std::string out = "/tmp/homesh_cli_keep.msh";
+  REQUIRE(run_homesh(geo + "plate_hole.geo -m order:p=2 " + out).exit_code == 0);
+  const std::string before = read(out);
+  REQUIRE(before.find("$HomeshProvenance") != std::string::npos);
+  REQUIRE(run_homesh(geo + "plate_hole.geo -m order:p=99 " + out).exit_code != 0);
+  REQUIRE(read(out) == before);
+  std::remove(out.c_str());
+  std::remove((out + ".opt").c_str());
+}
+
+TEST_CASE("a .msh input keeps its mesh; -m mesh needs CAD", "[app]") {
+  const std::string first = "/tmp/homesh_cli_first.msh", second = "/tmp/homesh_cli_second.msh";
+  auto r = run_homesh(geo + "plate_hole.geo -m mesh -m info " + first);
+  REQUIRE(r.exit_code == 0);
+  const int nodes = number_after(r.output, "order 1:");
+  r = run_homesh(first + " -m info " + second);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(number_after(r.output, "order 1:") == nodes);
+  REQUIRE(r.output.find("CAD: no") != std::string::npos);
+  r = run_homesh(first + " -m mesh " + second);
+  REQUIRE(r.exit_code != 0);
+  REQUIRE(r.output.find("has no CAD geometry") != std::string::npos);
+  for (const auto& f : {first, second}) {
+    std::remove(f.c_str());
+    std::remove((f + ".opt").c_str());
+  }
+}
