@@ -1,0 +1,26 @@
+#include "quality/element_sampling.h"
+
+#include <string>
+
+#include "core/error.h"
+#include "element/lagrange_basis.h"
+
+namespace homesh {
+
+ElementSampling::ElementSampling(int p, const Eigen::Matrix2Xd& uv) : p_(p), points_(uv) {
+  LagrangeBasis(p).tabulate_gradients(uv, dNdu_, dNdv_);
+}
+
+ElementSampling::ElementSampling(int p, const QuadratureRule& rule)
+    : ElementSampling(p, rule.points) {
+  weights_ = rule.weights;
+}
+
+void ElementSampling::check_nodes(const Eigen::Matrix2Xd& X) const {
+  if (X.cols() != node_count()) {
+    throw Error("element of order " + std::to_string(p_) + " needs " +
+                std::to_string(node_count()) + " nodes, got " + std::to_string(X.cols()));
+  }
+}
+
+}  // namespace homesh
