@@ -1,0 +1,63 @@
+#pragma once
+// Certified bounds of the Jacobian determinant of a high-order triangle by
+// adaptive Bezier subdivision (Johnen, Remacle, Geuzaine, "Geometrical validity
+// of curvilinear finite elements", JCP 233, 2013; Gmsh's
+// jacobianBasedQuality::minMaxJacobianDeterminant and AnalyseMeshQuality plugin).
+//
+// det J is written in the Bernstein basis (bezier_jacobian.h). On a (sub-)
+// triangle the minimum and maximum Bezier coefficients bound det J from below
+// and above, and the three corner coefficients are exact values of det J. The
+// domain with the worst bound is split in four (bezier_subdivision.h) until
+//   (a) the sign is decided: every coefficient of the domain > 0 (so det J > 0
+//       there), or some exact value found is <= 0, and
+//   (b) the gap between the bound and the best exact value is at most
+//       tolerance = relative_tolerance * max(|exact min|, |exact max|),
+// first for the minimum, then for the maximum with the signs mirrored (the
+// criteria of Gmsh's _coeffDataJac::boundsOk), so that a clockwise element
+// (det J < 0 everywhere) gets tight bounds too.
+#include <Eigen/Core>
+
+namespace homesh {
+
+/// Stopping criteria of the subdivision.
+struct BoundsOptions {
+  /// Gaps are refined to relative_tolerance * max(|min det J|, |max det J|)
+  /// (Gmsh uses 1e-3).
+  double relative_tolerance = 1e-3;
+  /// Most four-way subdivisions per element (Gmsh stops at 1000); reaching it
+  /// leaves `converged` false, the bounds stay valid.
+  int max_subdivisions = 1000;
+};
+
+/// Bounds of a polynomial f over the triangle:
+/// min_lower <= min f <= min_upper and max_lower <= max f <= max_upper, where
+/// min_upper and max_lower are values of f at subdivision corners.
+struct JacobianBounds {
+  double min_lower = 0, min_upper = 0, max_lower = 0, max_upper = 0;
+  /// The absolute gap tolerance reached (or aimed at, if not converged).
+  double tolerance = 0;
+  /// Both gaps <= tolerance and the sign of the minimum (and of the maximum) decided.
+  bool converged = false;
+  /// min_lower > 0: f > 0 on the whole triangle (a valid, counter-clockwise element).
+  bool valid_certified = false;
+  /// min_upper <= 0: f <= 0 at a point of the triangle (an invalid or clockwise element).
+  bool invalid_certified = false;
+  /// Number of four-way subdivisions done.
+  int subdivisions = 0;
+};
+
+/// Bounds of the degree-d polynomial with Bernstein coefficients c
+/// (bezier_size(d), storage of bezier_triangle.h) over the reference triangle.
+JacobianBounds bezier_bounds(int d, const Eigen::VectorXd& c, const BoundsOptions& opt = {});
+
+/// Bounds of det J (= 2 * area for a straight-sided triangle) of the order-p
+/// triangle with nodes X (2 by (p+1)(p+2)/2, Gmsh order).
+JacobianBounds jacobian_bounds(const Eigen::Matrix2Xd& X, int p, const BoundsOptions& opt = {});
+
+/// Gmsh's "minJ/maxJ" (AnalyseMeshQuality plugin) from the bounds
+/// minJ = min_lower and maxJ = max_upper: minJ / maxJ if maxJ > 0, maxJ / minJ
+/// if maxJ < 0 (a wholly inverted element scores as its mirror image), 0 if
+/// maxJ = 0. It is 1 for a straight-sided element, <= 0 if det J changes sign.
+double scaled_jacobian_ratio(const JacobianBounds& b);
+
+}  // namespace homesh
