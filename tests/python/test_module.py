@@ -1,0 +1,62 @@
+"""`import homesh` acts on the current Gmsh model of the same process."""
+import os
+
+import gmsh
+import pytest
+
+import homesh
+
+GEO = os.path.join(os.path.dirname(__file__), "..", "..", "geo")
+
+
+@pytest.fixture
+def session():
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    homesh.set_quiet(True)
+    yield
+    gmsh.finalize()
+
+
+def element_count(dim):
+    return sum(len(t) for t in gmsh.model.mesh.getElements(dim)[1])
+
+
+def test_stage_functions_mirror_the_registry():
+    names = [s["name"] for s in homesh.stages()]
+    assert {"mesh", "order", "info"} <= set(names)
+    for name in names:
+        assert callable(getattr(homesh, name))
+    order = next(s for s in homesh.stages() if s["name"] == "order")
+    assert order["options"]["p"][0] == "2"
+
+
+def test_order_acts_on_the_current_model_and_gmsh_keeps_working(session, tmp_path):
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    gmsh.model.mesh.generate(2)
+    nodes_linear = len(gmsh.model.mesh.getNodes()[0])
+    triangles = element_count(2)
+    result = homesh.order(p=3)
+    assert result["order"] == 3 and result["triangles"] == triangles
+    # Gmsh sees the order-3 mesh: 10-node triangles, V + 2E + T nodes.
+    types = gmsh.model.mesh.getElementTypes(2)
+    assert list(types) == [gmsh.model.mesh.getElementType("Triangle", 3)]
+    edges = (3 * triangles + element_count(1)) // 2
+    assert len(gmsh.model.mesh.getNodes()[0]) == nodes_linear + 2 * edges + triangles
+    out = tmp_path / "plate.msh"
+    homesh.write(str(out))
+    assert out.exists() and (tmp_path / "plate.msh.opt").exists()
+    assert "$HomeshProvenance" in out.read_text()
+    gmsh.model.mesh.setOrder(2)  # the script carries on with Gmsh itself
+    assert list(gmsh.model.mesh.getElementTypes(2)) == [9]
+
+
+def test_errors_raise_homesh_error_with_the_cli_message(session):
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    gmsh.model.mesh.generate(2)
+    with pytest.raises(homesh.Error, match=r"p=0: out of range \[1, 10\]"):
+        homesh.order(p=0)
+    with pytest.raises(homesh.Error, match="unknown option 'q'"):
+        homesh.order(q=2)
+    with pytest.raises(homesh.Error, match="unknown stage 'nosuch'"):
+        homesh.run("nosuch")
