@@ -1,0 +1,37 @@
+#pragma once
+// Galerkin assembly of the elastic analogy on the high-order elements of a mesh,
+// thesis Eqs 4.10-4.15: the global system K x = p + b of Eq 4.13 before the
+// Dirichlet conditions (fem/dirichlet.h) are applied.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "core/mesh.h"
+#include "fem/elasticity_coefficients.h"
+
+namespace homesh {
+
+struct AssemblyOptions {
+  /// Added to 2 (p - 1), the degree exact for straight elements with constant
+  /// coefficients (stiffness_quadrature_degree), for curved elements and
+  /// varying coefficients; the body force and thermal terms use the same rule.
+  int quadrature_margin = 2;
+};
+
+/// A sparse symmetric system K x = b over the 2 #nodes displacement dofs,
+/// interleaved: dof 2 i + c is component c (0: x, 1: y) of node i.
+struct LinearSystem {
+  Eigen::SparseMatrix<double> K;
+  Eigen::VectorXd b;
+};
+
+/// K (full storage, both triangles) and b summed from element_stiffness and
+/// element_load over the triangles of m (order m.order, nodes m.x, m.tri),
+/// with the coefficients c evaluated at every quadrature point of every
+/// element (QuadraturePoint{e, q, x_q}). Natural boundaries are traction free.
+/// Nodes in no triangle get the equation u = 0 (unit diagonal, zero load).
+/// Throws homesh::Error naming the element if an element is invalid (det J
+/// vanishes or changes sign) or a coefficient is out of range.
+LinearSystem assemble_elasticity(const Mesh& m, const ElasticityCoefficients& c,
+                                 const AssemblyOptions& options = {});
+
+}  // namespace homesh

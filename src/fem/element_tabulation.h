@@ -1,0 +1,29 @@
+#pragma once
+// The Lagrange basis of order p tabulated at the points of a triangle rule,
+// shared by every element of a mesh (elements differ only by their nodes).
+#include <Eigen/Core>
+
+#include "element/quadrature.h"
+
+namespace homesh {
+
+/// Basis of order `order` at the `rule` points: N, dN/du, dN/dv, each
+/// (p+1)(p+2)/2 by #points, nodes in Gmsh order (element/reference_nodes.h).
+struct ElementTabulation {
+  int order = 1;
+  QuadratureRule rule;
+  Eigen::MatrixXd N;
+  Eigen::MatrixXd dNdu;
+  Eigen::MatrixXd dNdv;
+};
+
+/// Quadrature degree for the stiffness of order-p elements: 2 (p - 1), exact for
+/// straight-sided elements with constant (lambda, mu) (the integrand of Eq 4.15
+/// is then a product of two gradients of degree p - 1), plus `margin` >= 0 for
+/// curved elements (rational integrand) and varying coefficients.
+int stiffness_quadrature_degree(int order, int margin);
+
+/// The tabulation of order 1 <= order <= kMaxOrder at triangle_quadrature(degree).
+ElementTabulation tabulate_element(int order, int quadrature_degree);
+
+}  // namespace homesh
