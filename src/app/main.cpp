@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "pipeline/run_pipeline.h"
 #include "pipeline/stage_registry.h"
+#include "quality/measure_registry.h"
 
 namespace {
 
@@ -40,7 +41,7 @@ int run(int argc, char** argv) {
   app.set_help_flag();
   std::vector<std::string> files, modules;
   std::string help_stage;
-  bool list = false, quiet = false, verbose = false;
+  bool list = false, list_measures = false, quiet = false, verbose = false, keep_invalid = false;
   app.add_option("files", files, "INPUT (.geo .step .brep .msh) and optional OUTPUT (.msh)")
       ->expected(0, 2);
   app.add_option("-m,--module", modules, "stage to run, as name:key=value:... (repeatable)")
@@ -48,6 +49,9 @@ int run(int argc, char** argv) {
   auto* help = app.add_option("-h,--help", help_stage, "this help, or a stage's options")
                    ->expected(0, 1);
   app.add_flag("--list", list, "list the stages");
+  app.add_flag("--measures", list_measures, "list the quality measures");
+  app.add_flag("--keep-invalid", keep_invalid,
+               "write the output even if some element is not certified valid");
   app.add_flag("-q,--quiet", quiet, "print warnings and errors only");
   app.add_flag("-v,--verbose", verbose, "show Gmsh's own messages");
   app.footer("example: homesh geo/naca.geo -m mesh -m order:p=4 -m info out.msh");
@@ -64,6 +68,12 @@ int run(int argc, char** argv) {
     std::fputs(stage_list().c_str(), stdout);
     return 0;
   }
+  if (list_measures) {
+    for (const auto& q : homesh::measures())
+      std::fputs(fmt::format("  {:<4} {:<28} {}   [{}]\n", q.name, q.title, q.formula, q.source).c_str(),
+                 stdout);
+    return 0;
+  }
   if (files.empty()) throw CLI::RequiredError("INPUT");
 
   std::vector<homesh::StageCall> calls;
@@ -75,6 +85,7 @@ int run(int argc, char** argv) {
   gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
   homesh::Context ctx;
   ctx.log.quiet = quiet;
+  ctx.keep_invalid = keep_invalid;
   homesh::load_input(files[0], ctx);
   homesh::run_stages(calls, ctx);
   if (files.size() > 1)

@@ -9,4 +9,13 @@ Mesh& Context::require_mesh(const std::string& stage) {
   return *mesh;
 }
 
+void Context::set_field(Field f) {
+  for (Field& g : fields)
+    if (g.name == f.name) {
+      g = std::move(f);
+      return;
+    }
+  fields.push_back(std::move(f));
+}
+
 }  // namespace homesh

@@ -18,6 +18,11 @@ struct Context {
   std::optional<Mesh> mesh;
   std::vector<Field> fields;
   Log log;
+  /// Write the output even if some element is not certified valid.
+  bool keep_invalid = false;
+
+  /// Adds `f`, replacing a field of the same name.
+  void set_field(Field f);
 
   /// The mesh, or homesh::Error telling `stage` needs one.
   Mesh& require_mesh(const std::string& stage);

@@ -14,7 +14,9 @@
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
+#include "pipeline/quality_report.h"
 #include "pipeline/stage_registry.h"
+#include "quality/mesh_validity.h"
 
 namespace homesh {
 namespace {
@@ -82,6 +84,18 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
 void write_output(const std::string& path, const std::string& provenance, Context& ctx) {
   const Mesh& m = ctx.require_mesh("output");
   if (extension(path) != "msh") throw Error(path + ": output must be a .msh file");
+  // Every output carries its certified validity; an invalid mesh is never written silently.
+  const MeshValidity v = mesh_validity(m);
+  if (std::none_of(ctx.fields.begin(), ctx.fields.end(),
+                   [](const Field& f) { return f.name == "minJ/maxJ"; })) {
+    ctx.log.info("{}", validity_line(m, v));
+    ctx.set_field({"minJ/maxJ", Field::Kind::Element, v.ratio.transpose()});
+  }
+  if (v.invalid > 0 && !ctx.keep_invalid)
+    throw Error(path + ": not written: " + std::to_string(v.invalid) +
+                " triangles are not certified valid (keep them with --keep-invalid)");
+  if (v.invalid > 0) ctx.log.warn("{}: writing {} invalid triangles as asked", path, v.invalid);
+
   std::vector<int> views;
   gmsh_adapter::gmsh_call("writing " + path, [&] {
     const auto tags = gmsh_adapter::write_model(m);

@@ -19,8 +19,11 @@ void load_input(const std::string& path, Context& ctx);
 /// with the `mesh` stage's defaults unless some call is `mesh`.
 void run_stages(const std::vector<StageCall>& calls, Context& ctx);
 
-/// Writes ctx's mesh and fields into the current model and to `path` (MSH 4.1,
-/// plus `path.opt`), recording `provenance` in the file.
+/// Certifies the validity of ctx's mesh, then writes it and ctx's fields (plus
+/// a minJ/maxJ view if no stage made one) into the current model and to `path`
+/// (MSH 4.1, plus `path.opt`), recording `provenance` in the file. Throws
+/// homesh::Error and writes nothing if a triangle is not certified valid,
+/// unless ctx.keep_invalid.
 void write_output(const std::string& path, const std::string& provenance, Context& ctx);
 
 }  // namespace homesh

@@ -1,0 +1,54 @@
+#include "pipeline/quality_report.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+namespace homesh {
+
+Eigen::Vector2d centroid(const Mesh& m, int e) {
+  return (m.x.col(m.tri(0, e)) + m.x.col(m.tri(1, e)) + m.x.col(m.tri(2, e))) / 3.0;
+}
+
+std::string validity_line(const Mesh& m, const MeshValidity& v) {
+  std::string line = fmt::format(
+      "validity: {} invalid of {} triangles (certified by Bezier bounds of det J, relative "
+      "tolerance {:g})",
+      v.invalid, m.num_triangles(), v.relative_tolerance);
+  if (v.worst_element >= 0) {
+    const Eigen::Vector2d c = centroid(m, v.worst_element);
+    line += fmt::format("; worst minJ/maxJ {:.4f} at triangle {} ({:.4g}, {:.4g})", v.worst,
+                        v.worst_element + 1, c.x(), c.y());
+  }
+  if (v.unconverged > 0) line += fmt::format("; {} not refined to tolerance", v.unconverged);
+  return line;
+}
+
+std::string histogram_line(const std::string& name, const Eigen::VectorXd& values) {
+  int bins[10] = {};
+  for (double q : values) ++bins[std::clamp(static_cast<int>(q * 10), 0, 9)];
+  std::string line = fmt::format("  {:<10} min {:.4f}  mean {:.4f}  |", name,
+                                 values.size() ? values.minCoeff() : 0.0,
+                                 values.size() ? values.mean() : 0.0);
+  for (int b : bins) line += fmt::format(" {}", b);
+  return line + " |";
+}
+
+std::string worst_elements(const Mesh& m, const Eigen::VectorXd& values, int count) {
+  std::vector<int> order(static_cast<std::size_t>(values.size()));
+  std::iota(order.begin(), order.end(), 0);
+  const int n = std::min<int>(count, static_cast<int>(order.size()));
+  std::partial_sort(order.begin(), order.begin() + n, order.end(),
+                    [&](int a, int b) { return values(a) < values(b); });
+  std::string out;
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector2d c = centroid(m, order[k]);
+    out += fmt::format("    triangle {:<8} at ({:.4g}, {:.4g})  {:.4f}\n", order[k] + 1, c.x(),
+                       c.y(), values(order[k]));
+  }
+  return out;
+}
+
+}  // namespace homesh

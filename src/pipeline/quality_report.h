@@ -1,0 +1,25 @@
+#pragma once
+// Text reports of mesh validity and quality, for a user to act on.
+#include <Eigen/Core>
+#include <string>
+
+#include "core/mesh.h"
+#include "quality/mesh_validity.h"
+
+namespace homesh {
+
+/// One line: invalid count (certified) and the worst minJ/maxJ with its
+/// triangle (1-based) and centroid.
+std::string validity_line(const Mesh& m, const MeshValidity& v);
+
+/// "name  min .. mean .. | counts of 10 bins over [0, 1] |" for per-element values.
+std::string histogram_line(const std::string& name, const Eigen::VectorXd& values);
+
+/// The `count` elements with the smallest values: triangle number (1-based),
+/// centroid and value, one per line.
+std::string worst_elements(const Mesh& m, const Eigen::VectorXd& values, int count);
+
+/// Centroid of the corners of triangle e.
+Eigen::Vector2d centroid(const Mesh& m, int e);
+
+}  // namespace homesh

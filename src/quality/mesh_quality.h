@@ -1,0 +1,29 @@
+#pragma once
+// A quality measure (quality/measure_registry.h) over every triangle of a mesh:
+// values at each element's own nodes (for ElementNodeData views, drawn curved)
+// and the minimum over the nodes and a reference lattice (thesis Section 3.6
+// shows measures at ~200 points per element; the lattice order is a choice).
+#include <Eigen/Core>
+
+#include "core/mesh.h"
+#include "quality/element_quality.h"
+#include "quality/measure_registry.h"
+
+namespace homesh {
+
+struct MeshMeasure {
+  /// #triangles minimum of the measure over each element's sample points.
+  Eigen::VectorXd element_min;
+  /// nodes-per-triangle by #triangles values at the element nodes, Gmsh order.
+  Eigen::MatrixXd node_values;
+};
+
+/// The default sampling lattice order for an order-p mesh: 2p (a multiple of p,
+/// so the lattice contains the element nodes).
+inline int default_lattice_order(int p) { return 2 * p; }
+
+/// Measure q over every triangle of m, sampled at the element nodes and at the
+/// nodes of the order-`lattice` reference lattice, with normalisation `ref`.
+MeshMeasure mesh_measure(const Mesh& m, const Measure& q, int lattice, Reference ref);
+
+}  // namespace homesh

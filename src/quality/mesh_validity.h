@@ -1,0 +1,32 @@
+#pragma once
+// Certified validity of every triangle of a mesh (quality/jacobian_bounds.h):
+// an element counts as valid only if its Bezier bounds prove det J > 0 on the
+// whole element; elements whose sign the subdivision could not decide count as
+// invalid (never the reverse).
+#include <Eigen/Core>
+
+#include "core/mesh.h"
+#include "quality/jacobian_bounds.h"
+
+namespace homesh {
+
+struct MeshValidity {
+  /// #triangles Gmsh's minJ/maxJ of each triangle (scaled_jacobian_ratio).
+  Eigen::VectorXd ratio;
+  /// #triangles certified lower bound of det J of each triangle.
+  Eigen::VectorXd min_det;
+  /// Triangles not certified valid.
+  int invalid = 0;
+  /// Triangles whose bounds reached max_subdivisions before the tolerance.
+  int unconverged = 0;
+  /// Smallest ratio and the triangle holding it (-1 for an empty mesh).
+  double worst = 1.0;
+  int worst_element = -1;
+  /// The relative tolerance the bounds were refined to.
+  double relative_tolerance = 0;
+};
+
+/// Bounds of det J of every triangle of m.
+MeshValidity mesh_validity(const Mesh& m, const BoundsOptions& opt = {});
+
+}  // namespace homesh

@@ -1,0 +1,78 @@
+// The quality stage and the validity guard on output, run as a user does.
+#include <gmsh.h>
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+
+#include "gmsh/read_model.h"
+#include "gmsh/write_model.h"
+#include "../support/gmsh_session.h"
+#include "../support/run_command.h"
+
+using homesh::test::run_homesh;
+
+namespace {
+
+const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+
+// A quadratic plate-with-hole mesh with one interior edge node pushed far
+// across its triangles: invalid, though Gmsh reads it happily.
+std::string write_invalid_mesh() {
+  const std::string path = "/tmp/homesh_invalid_input.msh";
+  homesh::test::GmshSession session;
+  gmsh::open(geo + "plate_hole.geo");
+  gmsh::model::mesh::generate(2);
+  gmsh::model::mesh::setOrder(2);
+  homesh::Mesh m = homesh::gmsh_adapter::read_model("plate");
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_class[i].dim == 2) {
+      m.x(0, i) += 0.5;
+      break;
+    }
+  homesh::gmsh_adapter::write_model(m);
+  gmsh::write(path);
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("quality stage: certified validity, views and a report", "[app]") {
+  const std::string out = "/tmp/homesh_quality.msh";
+  const auto r = run_homesh(geo + "plate_hole.geo -m mesh -m order:p=3 -m quality:measures=Q4,Q6 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
+  REQUIRE(std::regex_search(r.output, std::regex(R"(Q6\s+min 0\.\d+)")));
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  std::vector<int> views;
+  gmsh::view::getTags(views);
+  REQUIRE(views.size() == 5);  // minJ/maxJ, Q4 min, Q4, Q6 min, Q6
+  std::vector<std::string> names;
+  for (int v : views) {
+    std::string name;
+    gmsh::option::getString("View[" + std::to_string(gmsh::view::getIndex(v)) + "].Name", name);
+    names.push_back(name);
+  }
+  REQUIRE(names == std::vector<std::string>{"minJ/maxJ", "Q4 min", "Q4", "Q6 min", "Q6"});
+  std::remove(out.c_str());
+  std::remove((out + ".opt").c_str());
+}
+
+TEST_CASE("an invalid mesh is never written silently", "[app]") {
+  const std::string in = write_invalid_mesh(), out = "/tmp/homesh_invalid_output.msh";
+  std::remove(out.c_str());
+  auto r = run_homesh(in + " -m quality " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code != 0);
+  REQUIRE(std::regex_search(r.output, std::regex(R"(validity: [1-9]\d* invalid of)")));
+  REQUIRE(r.output.find("not certified valid (keep them with --keep-invalid)") != std::string::npos);
+  REQUIRE_FALSE(std::ifstream(out).good());
+  r = run_homesh("--keep-invalid " + in + " " + out);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("warning: " + out + ": writing") != std::string::npos);
+  REQUIRE(std::ifstream(out).good());
+  for (const auto& f : {in, out, out + ".opt"}) std::remove(f.c_str());
+}
