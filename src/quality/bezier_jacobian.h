@@ -15,7 +15,7 @@
 // points p (b_{e+d1} - b_{e+d0}) and p (b_{e+d2} - b_{e+d0}), and the product
 // of two Bernstein polynomials of degree q has the coefficients
 //
-//   (f g)_g = sum_{a+b=g} C(q; a) C(q; b) / C(2q; g) f_a g_b,
+//   (f h)_e = sum_{a+b=e} C(q; a) C(q; b) / C(2q; e) f_a h_b,
 //
 // with C(q; a) the trinomial coefficient q! / (a0! a1! a2!). Gmsh samples det J
 // at the Lagrange nodes of order 2(p-1) and converts; both give the same

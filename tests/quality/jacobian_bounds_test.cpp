@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "core/error.h"
 #include "element/jacobian.h"
@@ -175,7 +176,8 @@ TEST_CASE("folded corner: det J > 0 at every node yet invalid, caught by the bou
   CHECK(b.subdivisions > 0);
   CHECK(b.min_lower <= -0.045);
   CHECK(b.min_upper < -0.045 + b.tolerance);
-  CHECK(scaled_jacobian_ratio(b) < 0);
+  // Gmsh 4.8's AnalyseMeshQuality reports minJ/maxJ = -0.0173077 = -0.045 / 2.6.
+  CHECK(scaled_jacobian_ratio(b) == Approx(-0.045 / 2.6).epsilon(1e-9));
 }
 
 TEST_CASE("tolerance and subdivision budget", "[bounds]") {
@@ -226,4 +228,37 @@ TEST_CASE("scaled ratio follows Gmsh's minJ/maxJ", "[bounds]") {
   CHECK(scaled_jacobian_ratio(b) == 0.25);
   b.max_upper = 0.0;
   CHECK(scaled_jacobian_ratio(b) == 0.0);
+}
+
+TEST_CASE("scaled ratio matches Gmsh's AnalyseMeshQuality on curved elements", "[bounds]") {
+  // "minJ/maxJ 2D" of Gmsh 4.8's AnalyseMeshQuality plugin (JacobianDeterminant = 1)
+  // for single elements added as a discrete surface. Each needs subdivisions.
+  struct Case {
+    int p;
+    double gmsh_ratio;
+    std::vector<double> x, y;
+  };
+  const std::vector<Case> cases = {
+      {3, 0.9044041509150115,
+       {0.0, 1.206, 0.379, 0.407, 0.804, 0.925, 0.659, 0.258, 0.13, 0.522},
+       {0.0, 0.08, 0.844, 0.026, 0.052, 0.33, 0.592, 0.564, 0.283, 0.306}},
+      {4, 0.8272615442121853,
+       {0.0, 0.929, 0.256, 0.232, 0.466, 0.692, 0.762, 0.595, 0.422, 0.192, 0.133, 0.067, 0.293, 0.523, 0.364},
+       {0.0, 0.056, 1.175, 0.017, 0.025, 0.042, 0.334, 0.612, 0.9, 0.881, 0.587, 0.298, 0.31, 0.319, 0.598}},
+      {4, -0.13966738780619906,
+       {0.0, 1.214, 0.406, 0.365, 0.617, 0.857, 0.992, 0.77, 0.543, 0.346, 0.149, 0.086, 0.342, 0.734, 0.489},
+       {0.0, -0.078, 1.106, 0.054, 0.013, -0.038, 0.249, 0.492, 0.814, 0.831, 0.511, 0.268, 0.289, 0.279, 0.526}},
+      {5, 0.711447627083437,
+       {0.0, 0.787, 0.534, 0.156, 0.317, 0.471, 0.627, 0.735, 0.688, 0.635, 0.585, 0.423, 0.319, 0.213, 0.107, 0.261, 0.582, 0.474, 0.422, 0.532, 0.372},
+       {0.0, 0.261, 0.887, 0.049, 0.107, 0.16, 0.21, 0.39, 0.511, 0.635, 0.764, 0.707, 0.536, 0.353, 0.179, 0.226, 0.331, 0.585, 0.28, 0.459, 0.407}},
+  };
+  for (const Case& c : cases) {
+    INFO("p = " << c.p);
+    Eigen::Matrix2Xd X(2, c.x.size());
+    X.row(0) = Eigen::Map<const Eigen::RowVectorXd>(c.x.data(), c.x.size());
+    X.row(1) = Eigen::Map<const Eigen::RowVectorXd>(c.y.data(), c.y.size());
+    const JacobianBounds b = jacobian_bounds(X, c.p);
+    CHECK(b.subdivisions > 0);
+    CHECK(scaled_jacobian_ratio(b) == Approx(c.gmsh_ratio).epsilon(1e-10));
+  }
 }
