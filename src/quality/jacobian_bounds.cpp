@@ -31,12 +31,14 @@ class Refinement {
   }
 
   JacobianBounds run() {
-    // Refine the minimum, then the maximum. Meanwhile the tolerance can only
+    // Split the domain of lowest bound, then that of highest bound, until it
+    // meets both criteria (as Gmsh does). Meanwhile the tolerance can only
     // grow and the bounds only tighten, so the minimum stays refined.
     const auto by_min = [](const Domain& a, const Domain& b) { return a.min_b > b.min_b; };
     const auto by_max = [](const Domain& a, const Domain& b) { return a.max_b < b.max_b; };
-    refine(by_min, [this](const Domain& D) { return min_ok(D); });
-    refine(by_max, [this](const Domain& D) { return max_ok(D); });
+    const auto ok = [this](const Domain& D) { return min_ok(D) && max_ok(D); };
+    refine(by_min, ok);
+    refine(by_max, ok);
 
     JacobianBounds r;
     const auto lowest = std::min_element(live_.begin(), live_.end(), [](auto& a, auto& b) {

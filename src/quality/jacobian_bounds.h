@@ -7,14 +7,17 @@
 // det J is written in the Bernstein basis (bezier_jacobian.h). On a (sub-)
 // triangle the minimum and maximum Bezier coefficients bound det J from below
 // and above, and the three corner coefficients are exact values of det J. The
-// domain with the worst bound is split in four (bezier_subdivision.h) until
+// domain with the lowest lower bound is split in four (bezier_subdivision.h)
+// until it meets
 //   (a) the sign is decided: every coefficient of the domain > 0 (so det J > 0
 //       there), or some exact value found is <= 0, and
 //   (b) the gap between the bound and the best exact value is at most
 //       tolerance = relative_tolerance * max(|exact min|, |exact max|),
-// first for the minimum, then for the maximum with the signs mirrored (the
-// criteria of Gmsh's _coeffDataJac::boundsOk), so that a clockwise element
-// (det J < 0 everywhere) gets tight bounds too.
+// and the same with the signs mirrored for its upper bound; then the same for
+// the domain with the highest upper bound. These are Gmsh's criteria
+// (_coeffDataJac::boundsOk, _subdivideDomainsMinOrMax), so the results agree
+// with Gmsh's to rounding, and a clockwise element (det J < 0) gets tight
+// bounds too.
 #include <Eigen/Core>
 
 namespace homesh {
