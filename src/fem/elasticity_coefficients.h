@@ -21,7 +21,8 @@ struct QuadraturePoint {
 
 /// A constant value of type T or a function QuadraturePoint -> T; implicitly
 /// built from either, so `young = 2.0` and `young = [](const QuadraturePoint& q)
-/// { return 1.0 + q.x(0); }` both work.
+/// { return 1.0 + q.x(0); }` both work. A function should return a T (declare
+/// `-> Eigen::Vector2d`), not an Eigen expression of its own temporaries.
 template <class T>
 class Coefficient {
  public:
@@ -59,7 +60,7 @@ ScalarCoefficient per_element(Eigen::VectorXd values);
 /// uniform beta (T - T0) = s > 0 contracts: u = -s / (2 (lambda + mu)) (x - x0).
 struct ElasticityCoefficients {
   ScalarCoefficient young{1.0};                        // E > 0
-  ScalarCoefficient poisson{0.4};                      // nu in (-1, 1/2)
+  ScalarCoefficient poisson{0.4};                      // nu in (-1, 1/2); 0.4 as Sec 4.3
   VectorCoefficient body_force{Eigen::Vector2d::Zero()};  // f
   ScalarCoefficient beta{0.0};                         // thermal coefficient beta
   ScalarCoefficient temperature{0.0};                  // T

@@ -65,6 +65,9 @@ LinearSolveResult solve_linear_system(const Matrix& K, const Eigen::VectorXd& b,
   if (K.rows() != K.cols() || K.rows() != b.size())
     throw Error("solve_linear_system: K is " + std::to_string(K.rows()) + " by " +
                 std::to_string(K.cols()) + ", b has " + std::to_string(b.size()) + " entries");
+  if (guess.size() != 0 && guess.size() != b.size())
+    throw Error("solve_linear_system: guess has " + std::to_string(guess.size()) + " entries, b " +
+                std::to_string(b.size()));
   for (const auto& [name, method] : registry()) {
     if (name != options.method) continue;
     LinearSolveResult result = method(K, b, options, guess);

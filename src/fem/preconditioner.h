@@ -17,8 +17,9 @@ const std::vector<std::string>& preconditioner_names();
 /// A preconditioner for the symmetric positive definite K (full storage):
 ///  - "jacobi": M = diag(K);
 ///  - "block_jacobi": M = the 2 by 2 diagonal blocks of the nodes (dofs 2i, 2i+1,
-///    the interleaved numbering of LinearSystem), the nodal analogue of the
-///    element-by-element preconditioning of the thesis (Sec 4.2.2);
+///    the interleaved numbering of LinearSystem); the thesis' element-by-element
+///    PCG (Sec 4.2.2) does not name its preconditioner, these two are the
+///    classical choices that need no more than K's diagonal;
 ///  - "ichol": incomplete Cholesky with zero fill beyond K's pattern after AMD
 ///    reordering (Eigen::IncompleteCholesky, Lin & More 1999 diagonal shifts).
 /// Throws homesh::Error on an unknown name or a non-positive pivot.

@@ -25,7 +25,8 @@ struct ElasticitySolution {
 
 /// The displacement of the nodes of m under the coefficients c with the dofs of
 /// bc prescribed; every other boundary is traction free. `guess` (2 by #nodes,
-/// or empty) is the initial iterate of CG, e.g. the previous step's solution.
+/// or empty for zero) is the initial iterate of CG, e.g. the previous step's
+/// solution.
 /// Throws homesh::Error on invalid elements or coefficients, unknown solver
 /// names, or solver failure (a singular system: too few dofs prescribed to
 /// remove the rigid motions).
