@@ -9,17 +9,20 @@ namespace homesh {
 PraxisResult praxis(const std::function<double(const Eigen::VectorXd&)>& f,
                     const Eigen::VectorXd& x0, const PraxisOptions& opt) {
   const auto n = static_cast<unsigned>(x0.size());
+  nlopt::srand(opt.seed);
   nlopt::opt solver(nlopt::LN_PRAXIS, n);
   PraxisResult r;
   struct Data {
     const std::function<double(const Eigen::VectorXd&)>* f;
-    int* count;
-  } data{&f, &r.evaluations};
+    PraxisResult* result;
+  } data{&f, &r};
   solver.set_min_objective(
       [](const std::vector<double>& x, std::vector<double>&, void* d) {
         auto* data = static_cast<Data*>(d);
-        ++*data->count;
-        return (*data->f)(Eigen::Map<const Eigen::VectorXd>(x.data(), x.size()));
+        const double value = (*data->f)(Eigen::Map<const Eigen::VectorXd>(x.data(), x.size()));
+        ++data->result->evaluations;
+        data->result->history.push_back(value);
+        return value;
       },
       &data);
   solver.set_xtol_abs(opt.t0);
