@@ -22,7 +22,9 @@ std::string remark(const BoundaryOptimum& r, const std::string& thesis) {
                         p.min_jacobian);
   }
   if (p.optimum.f < 1e-3) text += "no distortion left: det J uniform over the element. ";
-  if (thesis == "invalid" && p.valid && g.valid) {
+  // The grid's last spacing, 0.004, leaves its minimum up to ~1e-3 above the true one.
+  const bool brute_force_not_lower = g.optimum.f >= p.optimum.f - 1e-3;
+  if (thesis == "invalid" && p.valid && g.valid && brute_force_not_lower) {
     text += fmt::format(
         "valid with a margin (det J >= {:.2f} of the ideal), and no lower element, valid or "
         "not, anywhere in the brute-force box. ",
