@@ -1,0 +1,154 @@
+#include "curving/analogy_formulation.h"
+
+#include <Eigen/Eigenvalues>
+
+#include "core/error.h"
+#include "curving/element_distortion.h"
+#include "fem/element_tabulation.h"
+#include "quality/ideal_jacobian.h"
+
+namespace homesh {
+namespace {
+
+// (min Q / max Q)^-1 per element, capped at 1e3 so that a nearly degenerate
+// element gets a large but finite coefficient.
+Eigen::VectorXd inverse_ratio(const Eigen::VectorXd& ratio) {
+  return ratio.cwiseMax(1e-3).cwiseInverse();
+}
+
+ElasticityCoefficients base(const FormulationParams& p) {
+  ElasticityCoefficients c;
+  c.young = 1.0;
+  c.poisson = p.poisson;
+  c.reference_temperature = 1.0;
+  return c;
+}
+
+// Case 1: E = 1, no added terms.
+ElasticityCoefficients plain(const Mesh&, const Mesh&, const FormulationParams& p) { return base(p); }
+
+// Case 2: E = 1 / Ae (Palmerio's stiffening of small elements).
+ElasticityCoefficients area(const Mesh& m, const Mesh&, const FormulationParams& p) {
+  ElasticityCoefficients c = base(p);
+  c.young = per_element(element_distortion(m).area.cwiseInverse());
+  return c;
+}
+
+// Case 3: E = 1, f_x = f_y = heat ((min Q17 / max Q17)^-1 - 1) per element: the
+// thesis' force less its undistorted value 1, so that an undistorted mesh feels
+// no force (as T0 = 1 does for the heat terms).
+ElasticityCoefficients force_q17(const Mesh& m, const Mesh&, const FormulationParams& p) {
+  ElasticityCoefficients c = base(p);
+  const Eigen::VectorXd t = inverse_ratio(element_distortion(m).q17_ratio);
+  c.body_force = [t, s = p.heat](const QuadraturePoint& q) {
+    return Eigen::Vector2d::Constant(s * (t(q.element) - 1.0));
+  };
+  return c;
+}
+
+ElasticityCoefficients heated(const FormulationParams& p, Eigen::VectorXd temperature) {
+  ElasticityCoefficients c = base(p);
+  c.beta = -p.heat;
+  c.temperature = per_element(std::move(temperature));
+  return c;
+}
+
+// Case 4: T = (min Q17 / max Q17)^-1 per element.
+ElasticityCoefficients heat_q17(const Mesh& m, const Mesh&, const FormulationParams& p) {
+  return heated(p, inverse_ratio(element_distortion(m).q17_ratio));
+}
+
+// Case 5: T = (min Q4 / max Q4)^-1, Q4 = omega^2 (Eq 3.38).
+ElasticityCoefficients heat_q4(const Mesh& m, const Mesh&, const FormulationParams& p) {
+  return heated(p, inverse_ratio(element_distortion(m).q17_ratio.cwiseAbs2()));
+}
+
+// Section 4.4.2: T = 1 / Ae, scaled so the mean element is at T0 = 1.
+ElasticityCoefficients heat_area(const Mesh& m, const Mesh&, const FormulationParams& p) {
+  const Eigen::VectorXd a = element_distortion(m).area;
+  return heated(p, a.mean() * a.cwiseInverse());
+}
+
+// Cases 6 and 7: sigma_t ~ R^T Lambda R, the metric tensor of the map at each
+// quadrature point (reference->physical: J^T J; ideal->physical: W^T W, Eq 3.14),
+// scaled to unit determinant so that only its shape acts (the thesis does not
+// state its scaling). The thesis activates its added terms "once elements have
+// undergone an extreme distortion" (Section 4.4); we take the continuous form of
+// that rule: the stress is the change of the scaled metric since the start of
+// the deformation, sigma_t = -heat (M^ - M^_initial), so an element the
+// deformation has not distorted is stress free whatever its shape or labels.
+Eigen::Matrix2d scaled_metric(const Eigen::Matrix2d& F) {
+  const Eigen::Matrix2d M = F.transpose() * F;
+  const double det = M.determinant();
+  return det > 0 ? Eigen::Matrix2d(M / std::sqrt(det)) : Eigen::Matrix2d::Identity();
+}
+
+ElasticityCoefficients metric(const Mesh& m, const Mesh& initial, const FormulationParams& p,
+                              bool ideal) {
+  ElasticityCoefficients c = base(p);
+  const ElementTabulation tab =
+      tabulate_element(m.order, stiffness_quadrature_degree(m.order, p.assembly.quadrature_margin));
+  const Eigen::Index nq = tab.rule.points.cols();
+  std::vector<Eigen::Matrix2d> table(static_cast<std::size_t>(m.num_triangles() * nq));
+  const Eigen::Matrix2d map = ideal ? Eigen::Matrix2d(reference_to_ideal_jacobian().inverse())
+                                    : Eigen::Matrix2d::Identity();
+  auto jacobian_at = [&](const Eigen::Matrix2Xd& X, Eigen::Index k) {
+    Eigen::Matrix2d J;
+    J.col(0) = X * tab.dNdu.col(k);
+    J.col(1) = X * tab.dNdv.col(k);
+    return Eigen::Matrix2d(J * map);
+  };
+  for (int e = 0; e < m.num_triangles(); ++e) {
+    const Eigen::Matrix2Xd X = m.triangle_nodes(e), X0 = initial.triangle_nodes(e);
+    for (Eigen::Index k = 0; k < nq; ++k)
+      table[e * nq + k] = scaled_metric(jacobian_at(X, k)) - scaled_metric(jacobian_at(X0, k));
+  }
+  c.anisotropic_stress = [table = std::move(table), nq, s = -p.heat](const QuadraturePoint& q) {
+    return Eigen::Matrix2d(s * table[q.element * nq + q.index]);
+  };
+  return c;
+}
+
+ElasticityCoefficients metric_ref(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
+  return metric(m, initial, p, false);
+}
+ElasticityCoefficients metric_ideal(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
+  return metric(m, initial, p, true);
+}
+
+// Case 8: E = (min Q17 / max Q17)^-1, no added terms.
+ElasticityCoefficients stiff_q17(const Mesh& m, const Mesh&, const FormulationParams& p) {
+  ElasticityCoefficients c = base(p);
+  c.young = per_element(inverse_ratio(element_distortion(m).q17_ratio));
+  return c;
+}
+
+}  // namespace
+
+const std::vector<AnalogyFormulation>& analogy_formulations() {
+  static const std::vector<AnalogyFormulation> table = {
+      {"plain", "case 1: E = 1, no added terms", plain},
+      {"area", "case 2: E = 1/Ae", area},
+      {"force_q17", "case 3: E = 1, fx = fy = (min Q17/max Q17)^-1 - 1", force_q17},
+      {"heat_q17", "case 4: E = 1, T = (min Q17/max Q17)^-1", heat_q17},
+      {"heat_q4", "case 5: E = 1, T = (min Q4/max Q4)^-1", heat_q4},
+      {"metric_ref", "case 6: E = 1, sigma_t ~ R^T Lambda R of the reference->physical map",
+       metric_ref},
+      {"metric_ideal", "case 7: E = 1, sigma_t ~ R^T Lambda R of the ideal->physical map",
+       metric_ideal},
+      {"stiff_q17", "case 8: E = (min Q17/max Q17)^-1, no added terms", stiff_q17},
+      {"heat_area", "Section 4.4.2: E = 1, T = 1/Ae", heat_area},
+  };
+  return table;
+}
+
+const AnalogyFormulation& analogy_formulation(const std::string& name) {
+  std::string known;
+  for (const auto& f : analogy_formulations()) {
+    if (f.name == name) return f;
+    known += (known.empty() ? "" : ", ") + f.name;
+  }
+  throw Error("unknown formulation '" + name + "' (formulations: " + known + ")");
+}
+
+}  // namespace homesh

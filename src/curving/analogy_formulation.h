@@ -1,0 +1,44 @@
+#pragma once
+// The formulations of the augmented elastic analogy compared in thesis
+// Section 4.4 (Tables 4.1-4.9, Section 4.4.2), registered by name. Each turns
+// the current mesh into the coefficients of the elasticity problem
+// (fem/elasticity_coefficients.h); they are re-evaluated at every load step.
+//
+// Sign convention: `heat` > 0 makes hot elements expand (a "heated" distorted
+// element resists being squashed further, Section 4.4.1). In Eq 4.5 the thermal
+// stress adds to the stress, so the coefficient passed on is beta = -heat.
+// Stress-free temperature T0 = 1: an undistorted element (min Q / max Q = 1) is
+// not heated.
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "fem/assemble_elasticity.h"
+#include "fem/elasticity_coefficients.h"
+
+namespace homesh {
+
+struct FormulationParams {
+  double poisson = 0.4;  ///< nu
+  double heat = 1.0;     ///< scale of the added terms (body force, heat), see above
+  AssemblyOptions assembly;  ///< must match the assembly that uses the coefficients
+};
+
+struct AnalogyFormulation {
+  std::string name;
+  std::string description;  ///< E, f, T / sigma_t as in Table 4.9
+  /// Coefficients on the current mesh m; `initial` is the mesh the deformation
+  /// started from (same connectivity).
+  ElasticityCoefficients (*coefficients)(const Mesh& m, const Mesh& initial,
+                                         const FormulationParams& p);
+};
+
+/// All formulations: plain, area, force_q17, heat_q17, heat_q4, metric_ref,
+/// metric_ideal, stiff_q17 (Table 4.9 cases 1-8) and heat_area (T = 1/Ae,
+/// Section 4.4.2).
+const std::vector<AnalogyFormulation>& analogy_formulations();
+
+/// The formulation called `name`; homesh::Error listing the names if none.
+const AnalogyFormulation& analogy_formulation(const std::string& name);
+
+}  // namespace homesh

@@ -1,0 +1,49 @@
+#pragma once
+// Mesh deformation by the augmented elastic analogy (thesis Section 4.2): the
+// prescribed nodes move to their targets in load increments; at each increment
+// the interior follows the solution of the elasticity problem posed on the
+// current (already deformed) mesh, with the coefficients of the chosen
+// formulation re-evaluated on it. Validity is certified after every increment
+// (Bezier bounds of det J); an increment that would break it is halved, up to
+// `max_halvings` times in a row, before the deformation gives up and returns the
+// last valid state; after an accepted increment the step doubles again, up to
+// its initial size.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "curving/analogy_formulation.h"
+#include "fem/linear_solver.h"
+
+namespace homesh {
+
+struct DeformOptions {
+  std::string formulation = "plain";
+  FormulationParams params;
+  LinearSolverOptions solver;
+  int increments = 4;    ///< equal load increments from start to target
+  int max_halvings = 6;  ///< halvings of a failing increment before giving up
+};
+
+struct DeformResult {
+  Mesh mesh;               ///< the last certified-valid state
+  double reached = 0;      ///< fraction of the prescribed motion applied, in [0, 1]
+  bool complete = false;   ///< reached == 1 with every element certified valid
+  int solves = 0;          ///< elasticity solves (including rejected increments)
+  int iterations = 0;      ///< total CG iterations (0 for direct solvers)
+  double worst_ratio = 1;  ///< worst certified minJ/maxJ of the result
+  int invalid_at_failure = 0;  ///< invalid elements of the first rejected state, if it failed
+};
+
+/// Deforms m so that each node i with prescribed[i] moves from m.x.col(i) to
+/// target.col(i); other nodes follow the elastic analogy. m must be valid.
+/// Throws homesh::Error on bad arguments (sizes, increments < 1, unknown
+/// formulation) or a failed solve.
+DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
+                         const std::vector<bool>& prescribed, const DeformOptions& opt = {});
+
+/// prescribed[i] = node i lies on a model point or curve (dim 0 or 1).
+std::vector<bool> boundary_nodes(const Mesh& m);
+
+}  // namespace homesh

@@ -1,0 +1,133 @@
+#include "curving/deform_mesh.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "../fem/fem_test_support.h"
+#include "core/error.h"
+#include "quality/mesh_validity.h"
+
+using namespace homesh;
+
+namespace {
+
+void classify_square_boundary(Mesh& m) {
+  for (int i : fem_test::square_boundary(m)) m.node_class[i] = {1, 1};
+}
+
+// Straight-sided quarter annulus 1 <= r <= 2 (corners on the circles), with
+// targets that put every boundary node of the order-p mesh on the circles.
+struct Annulus {
+  Mesh m;
+  Eigen::Matrix2Xd target;
+  std::vector<bool> prescribed;
+};
+
+Annulus straight_annulus(int n, int p) {
+  const Mesh param = fem_test::unit_square(n, 1);
+  Mesh lin = param;
+  for (int i = 0; i < lin.num_nodes(); ++i) {
+    const double r = 1 + param.x(0, i), t = M_PI / 2 * param.x(1, i);
+    lin.x.col(i) << r * std::cos(t), r * std::sin(t);
+  }
+  // raise_order numbers new nodes by connectivity alone, so node i of both
+  // raised meshes is the same node: classify by its parameter coordinates.
+  const Mesh s = raise_order(param, p);
+  Annulus a{raise_order(lin, p), {}, {}};
+  a.target = a.m.x;
+  a.prescribed.assign(a.m.num_nodes(), false);
+  for (int i = 0; i < a.m.num_nodes(); ++i) {
+    const double u = s.x(0, i), v = s.x(1, i);
+    a.prescribed[i] = std::min({u, v, 1 - u, 1 - v}) < 1e-12;
+    if (std::abs(u) < 1e-12 || std::abs(u - 1) < 1e-12) {
+      const Eigen::Vector2d x = a.m.x.col(i);
+      a.target.col(i) = (1 + u) * x.normalized();
+    }
+  }
+  return a;
+}
+
+}  // namespace
+
+TEST_CASE("a rigid rotation of the boundary rotates the interior exactly", "[curving]") {
+  for (int p : {1, 3}) {
+    Mesh m = fem_test::unit_square(4, p);
+    classify_square_boundary(m);
+    const double angle = 0.5;
+    Eigen::Matrix2d R;
+    R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+    const Eigen::Vector2d c(0.5, 0.5);
+    const Eigen::Matrix2Xd target = (R * (m.x.colwise() - c)).colwise() + c;
+    DeformOptions opt;
+    opt.increments = 3;
+    const DeformResult r = deform_mesh(m, target, boundary_nodes(m), opt);
+    REQUIRE(r.complete);
+    REQUIRE(r.reached == 1.0);
+    REQUIRE(r.solves == 3);
+    // Each increment is a linear field on the current mesh: reproduced exactly.
+    REQUIRE((r.mesh.x - target).cwiseAbs().maxCoeff() < 1e-10);
+    REQUIRE(r.worst_ratio == Approx(1.0).margin(1e-9));
+  }
+}
+
+TEST_CASE("every formulation curves a quarter annulus onto its circles, valid", "[curving]") {
+  Annulus a = straight_annulus(4, 4);
+  for (const auto& f : analogy_formulations()) {
+    CAPTURE(f.name);
+    DeformOptions opt;
+    opt.formulation = f.name;
+    opt.increments = 2;
+    const DeformResult r = deform_mesh(a.m, a.target, a.prescribed, opt);
+    REQUIRE(r.complete);
+    REQUIRE(mesh_validity(r.mesh).invalid == 0);
+    double off_circle = 0;
+    for (int i = 0; i < a.m.num_nodes(); ++i)
+      if (a.prescribed[i]) off_circle = std::max(off_circle, (r.mesh.x.col(i) - a.target.col(i)).norm());
+    REQUIRE(off_circle < 1e-12);
+    REQUIRE(r.worst_ratio > 0.5);
+  }
+}
+
+TEST_CASE("on a straight mesh the heat terms vanish: same result as plain", "[curving]") {
+  Annulus a = straight_annulus(3, 2);
+  DeformOptions opt;
+  opt.increments = 1;
+  const Mesh plain = deform_mesh(a.m, a.target, a.prescribed, opt).mesh;
+  // Every added term is zero on the mesh the deformation starts from.
+  for (const char* name : {"heat_q17", "heat_q4", "force_q17", "stiff_q17", "metric_ideal",
+                           "metric_ref"}) {
+    CAPTURE(name);
+    opt.formulation = name;
+    const Mesh other = deform_mesh(a.m, a.target, a.prescribed, opt).mesh;
+    REQUIRE((other.x - plain.x).cwiseAbs().maxCoeff() < 1e-10);
+  }
+  // With two increments the second sees the distortion the first made.
+  opt.increments = 2;
+  opt.formulation = "plain";
+  const Mesh plain2 = deform_mesh(a.m, a.target, a.prescribed, opt).mesh;
+  for (const char* name : {"heat_q17", "metric_ideal"}) {
+    CAPTURE(name);
+    opt.formulation = name;
+    const Mesh other = deform_mesh(a.m, a.target, a.prescribed, opt).mesh;
+    REQUIRE((other.x - plain2.x).cwiseAbs().maxCoeff() > 1e-6);
+  }
+}
+
+TEST_CASE("an impossible deformation stops at the last valid state", "[curving]") {
+  Mesh m = fem_test::unit_square(4, 2);
+  classify_square_boundary(m);
+  Eigen::Matrix2Xd target = m.x;
+  int moved = -1;
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (std::abs(m.x(0, i)) < 1e-12 && std::abs(m.x(1, i) - 0.5) < 1e-12) moved = i;
+  REQUIRE(moved >= 0);
+  target(0, moved) = 1.5;  // drag a left-side node out through the right side
+  DeformOptions opt;
+  opt.max_halvings = 4;
+  const DeformResult r = deform_mesh(m, target, boundary_nodes(m), opt);
+  REQUIRE_FALSE(r.complete);
+  REQUIRE(r.reached < 1.0);
+  REQUIRE(r.invalid_at_failure > 0);
+  REQUIRE(mesh_validity(r.mesh).invalid == 0);
+  REQUIRE_THROWS_AS(deform_mesh(m, target, boundary_nodes(m), DeformOptions{"nosuch"}), Error);
+}
