@@ -6,4 +6,4 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh"
 mkdir -p "$root/out"
 "${HOMESH_BUILD_DIR:-$root/build}/homesh" "$root/geo/naca.geo" \
-  -m mesh -m order:p=4 -m quality -m info "$root/out/naca7526.msh"
+  -m mesh -m curve:p=4 -m quality -m info "$root/out/naca7526.msh"

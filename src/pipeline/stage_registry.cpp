@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/error.h"
+#include "pipeline/stages/curve_stage.h"
 #include "pipeline/stages/info_stage.h"
 #include "pipeline/stages/mesh_stage.h"
 #include "pipeline/stages/order_stage.h"
@@ -11,7 +12,7 @@
 namespace homesh {
 
 const std::vector<Stage>& stages() {
-  static const std::vector<Stage> table = {mesh_stage(), order_stage(), quality_stage(),
+  static const std::vector<Stage> table = {mesh_stage(), order_stage(), curve_stage(), quality_stage(),
                                            info_stage()};
   return table;
 }
