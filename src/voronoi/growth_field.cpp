@@ -1,0 +1,61 @@
+#include "voronoi/growth_field.h"
+
+#include <string>
+
+#include "core/error.h"
+
+namespace homesh {
+
+GrowthField::GrowthField(const VoronoiProblem& problem)
+    : grid_(problem.grid),
+      metric_(problem.metric),
+      contact_(problem.contact),
+      domain_(problem.domain) {
+  const CartesianGrid& g = grid_;
+  const int n = g.node_count();
+  uniform_ = true;
+  for (int k = 1; k < metric_.coarse().node_count(); ++k)
+    uniform_ = uniform_ && metric_.metric(k) == metric_.metric(0);
+  if (!uniform_) {
+    stencil_.resize(n);
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) stencil_[g.index(i, j)] = metric_.stencil(g.point(i, j));
+  }
+  inside_count_ = n;
+  if (!has_domain()) return;
+  if (domain_.size() != n)
+    throw Error("voronoi: domain has " + std::to_string(domain_.size()) + " values for " +
+                std::to_string(n) + " grid nodes");
+  // The contact band: two cells into the boundary crystal.
+  const double width = 2.0 * g.ds();
+  zone_.assign(n, inside);
+  normal_.assign(n, Eigen::Vector2d::Zero());
+  inside_count_ = 0;
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      const int k = g.index(i, j);
+      const double d = domain_(k);
+      if (d <= 0.0) {
+        ++inside_count_;
+        continue;
+      }
+      zone_[k] = d <= width ? contact : outside;
+      const int il = i > 0 ? i - 1 : i, ir = i + 1 < g.nx ? i + 1 : i;
+      const int jl = j > 0 ? j - 1 : j, jr = j + 1 < g.ny ? j + 1 : j;
+      const Eigen::Vector2d grad((domain_(g.index(ir, j)) - domain_(g.index(il, j))) / ((ir - il) * g.dx),
+                                 (domain_(g.index(i, jr)) - domain_(g.index(i, jl))) / ((jr - jl) * g.dy));
+      if (grad.norm() > 0.0) normal_[k] = grad.normalized();
+    }
+  }
+}
+
+double GrowthField::speed(int node, const Eigen::Vector2d& N) const {
+  if (uniform_) return metric_speed(metric_.inverse(0), N);
+  const ShepardStencil& s = stencil_[node];
+  double F = 0.0;
+  for (int k = 0; k < 4; ++k)
+    if (s.w[k] != 0.0) F += s.w[k] * metric_speed(metric_.inverse(s.node[k]), N);
+  return F;
+}
+
+}  // namespace homesh

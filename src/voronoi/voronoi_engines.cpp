@@ -1,0 +1,32 @@
+#include "voronoi/voronoi_engines.h"
+
+#include "core/error.h"
+#include "voronoi/level_set_engine.h"
+
+namespace homesh {
+
+const std::vector<VoronoiEngine>& voronoi_engines() {
+  static const std::vector<VoronoiEngine> engines = {
+      {"level_set",
+       "one level set per seed, first-order upwind, collisions frozen on grid lines "
+       "(thesis Eqs 2.1-2.13)",
+       grow_crystals_level_set},
+  };
+  return engines;
+}
+
+const VoronoiEngine& voronoi_engine(const std::string& name) {
+  std::string names;
+  for (const VoronoiEngine& e : voronoi_engines()) {
+    if (e.name == name) return e;
+    names += (names.empty() ? "" : ", ") + e.name;
+  }
+  throw Error("unknown Voronoi engine '" + name + "' (choose from: " + names + ")");
+}
+
+CrystalPartition grow_crystals(const VoronoiProblem& problem, const std::string& engine,
+                               const VoronoiOptions& options) {
+  return voronoi_engine(engine).run(problem, options);
+}
+
+}  // namespace homesh

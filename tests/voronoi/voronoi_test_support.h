@@ -1,0 +1,82 @@
+#pragma once
+// Shared fixtures of the Voronoi tests: reproducible seeds, circumcentres,
+// the triangles of CGAL's Delaunay triangulation a grid partition can show,
+// and how far a seed set is from a degenerate one.
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "voronoi/cgal_delaunay.h"
+#include "voronoi/dual_triangulation.h"
+
+namespace homesh::test {
+
+/// `count` seeds uniform in [lo, hi]^2 from mt19937(seed) (the generator is
+/// fixed by the standard, the scaling written out, so the sets are the same
+/// everywhere).
+inline Eigen::Matrix2Xd uniform_seeds(int count, unsigned seed, double lo, double hi) {
+  std::mt19937 gen(seed);
+  Eigen::Matrix2Xd p(2, count);
+  for (int k = 0; k < count; ++k)
+    for (int d = 0; d < 2; ++d) p(d, k) = lo + (hi - lo) * (gen() / 4294967296.0);
+  return p;
+}
+
+inline Eigen::Vector2d circumcentre(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                    const Eigen::Vector2d& c) {
+  const Eigen::Vector2d u = b - a, v = c - a;
+  const double d = 2.0 * (u.x() * v.y() - u.y() * v.x());
+  return a + Eigen::Vector2d(v.y() * u.squaredNorm() - u.y() * v.squaredNorm(),
+                             u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) / d;
+}
+
+/// Signed distance of p into the box [lo, hi]^2 (> 0 inside).
+inline double inside_box(const Eigen::Vector2d& p, double lo, double hi) {
+  return std::min({p.x() - lo, p.y() - lo, hi - p.x(), hi - p.y()});
+}
+
+/// How a Delaunay triangulation of `seeds` looks on a grid over [lo, hi]^2.
+struct DelaunayInBox {
+  /// The triangles whose circumcentre (Voronoi vertex) is inside the box,
+  /// rotated to start at their smallest index: what a partition of the box can
+  /// show.
+  std::set<std::array<int, 3>> triangles;
+  /// Smallest |distance to the box boundary| of a circumcentre.
+  double border_margin = std::numeric_limits<double>::infinity();
+  /// Smallest | |p - c| - R | over the triangles near or in the box and the
+  /// other seeds p: how close the set is to four cocircular seeds.
+  double incircle_margin = std::numeric_limits<double>::infinity();
+};
+
+inline DelaunayInBox delaunay_in_box(const Eigen::Matrix2Xd& seeds, double lo, double hi) {
+  DelaunayInBox out;
+  for (const auto& t : cgal_delaunay_triangles(seeds)) {
+    const Eigen::Vector2d c = circumcentre(seeds.col(t[0]), seeds.col(t[1]), seeds.col(t[2]));
+    const double R = (c - seeds.col(t[0])).norm();
+    const double depth = inside_box(c, lo, hi);
+    out.border_margin = std::min(out.border_margin, std::abs(depth));
+    if (depth > 0.0) out.triangles.insert(t);
+    if (depth < -0.05 * (hi - lo)) continue;
+    for (int q = 0; q < seeds.cols(); ++q)
+      if (q != t[0] && q != t[1] && q != t[2])
+        out.incircle_margin = std::min(out.incircle_margin, std::abs((seeds.col(q) - c).norm() - R));
+  }
+  return out;
+}
+
+/// The triangles of a dual, rotated to start at their smallest index.
+inline std::set<std::array<int, 3>> rotated(const std::vector<std::array<int, 3>>& triangles) {
+  std::set<std::array<int, 3>> out;
+  for (auto t : triangles) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    out.insert(t);
+  }
+  return out;
+}
+
+}  // namespace homesh::test
