@@ -3,6 +3,7 @@
 // the triangles of CGAL's Delaunay triangulation a grid partition can show,
 // and how far a seed set is from a degenerate one.
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -53,18 +54,24 @@ struct DelaunayInBox {
   double incircle_margin = std::numeric_limits<double>::infinity();
 };
 
-inline DelaunayInBox delaunay_in_box(const Eigen::Matrix2Xd& seeds, double lo, double hi) {
+/// In a constant metric M = L L^T the Voronoi diagram is the Euclidean one of
+/// the seeds mapped by x -> L^T x (Lt), and its vertices map back by Lt^-1;
+/// the margins are then metric lengths.
+inline DelaunayInBox delaunay_in_box(const Eigen::Matrix2Xd& seeds, double lo, double hi,
+                                     const Eigen::Matrix2d& Lt = Eigen::Matrix2d::Identity()) {
   DelaunayInBox out;
-  for (const auto& t : cgal_delaunay_triangles(seeds)) {
-    const Eigen::Vector2d c = circumcentre(seeds.col(t[0]), seeds.col(t[1]), seeds.col(t[2]));
-    const double R = (c - seeds.col(t[0])).norm();
-    const double depth = inside_box(c, lo, hi);
+  const Eigen::Matrix2Xd mapped = Lt * seeds;
+  const Eigen::Matrix2d back = Lt.inverse();
+  for (const auto& t : cgal_delaunay_triangles(mapped)) {
+    const Eigen::Vector2d c = circumcentre(mapped.col(t[0]), mapped.col(t[1]), mapped.col(t[2]));
+    const double R = (c - mapped.col(t[0])).norm();
+    const double depth = inside_box(back * c, lo, hi);
     out.border_margin = std::min(out.border_margin, std::abs(depth));
     if (depth > 0.0) out.triangles.insert(t);
     if (depth < -0.05 * (hi - lo)) continue;
     for (int q = 0; q < seeds.cols(); ++q)
       if (q != t[0] && q != t[1] && q != t[2])
-        out.incircle_margin = std::min(out.incircle_margin, std::abs((seeds.col(q) - c).norm() - R));
+        out.incircle_margin = std::min(out.incircle_margin, std::abs((mapped.col(q) - c).norm() - R));
   }
   return out;
 }
