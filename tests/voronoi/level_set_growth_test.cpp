@@ -141,6 +141,42 @@ TEST_CASE("two crystals meet on the bisector of their seeds in the metric",
   }
 }
 
+TEST_CASE("crystals with their own metrics meet on the Apollonius circle",
+          "[voronoi][level_set]") {
+  // Seed a grows in |x|/h_a, seed b in |x|/h_b (VoronoiProblem::seed_metrics,
+  // as in Fig 2.4): the interface |x - a| / |x - b| = h_a / h_b = k is the
+  // circle of centre (k^2 b - a) / (k^2 - 1) and radius k |b - a| / (k^2 - 1)
+  // where a reaches it straight, on the arc facing a; behind b, crystal a
+  // must grow round b's crystal and arrives later (the crystal-growth diagram
+  // is not the multiplicatively weighted one there). The seed crystals differ
+  // in metric radius, so they are born at different times.
+  const int n = 201;
+  const double ds = 1.0 / (n - 1), ha = 0.2, hb = 0.1, k = ha / hb;
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, n, n);
+  p.seeds.resize(2, 2);
+  p.seeds << 0.3, 0.7, 0.5, 0.5;
+  p.seed_metrics = {metric_from_axes(0.0, ha, ha), metric_from_axes(0.0, hb, hb)};
+  const CrystalPartition r = grow_crystals(p);
+  CHECK(r.settled);
+  const Eigen::Vector2d a = p.seeds.col(0), b = p.seeds.col(1);
+  const Eigen::Vector2d centre = (k * k * b - a) / (k * k - 1);
+  const double radius = k * (b - a).norm() / (k * k - 1);
+  double worst = 0.0;
+  int edges = 0;
+  const CartesianGrid& g = p.grid;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      if (r.labels(g.index(i, j)) == r.labels(g.index(i + 1, j))) continue;
+      const Eigen::Vector2d mid = (g.point(i, j) + g.point(i + 1, j)) / 2;
+      if ((mid - a).dot(mid - centre) >= 0.0) continue;
+      worst = std::max(worst, std::abs((mid - centre).norm() - radius) / ds);
+      ++edges;
+    }
+  CHECK(edges > 40);
+  CHECK(worst < 1.5);
+}
+
 TEST_CASE("engines are chosen by name", "[voronoi][level_set]") {
   CHECK(voronoi_engine("level_set").name == "level_set");
   CHECK_FALSE(voronoi_engines().empty());

@@ -1,0 +1,162 @@
+#include "voronoi/voronoi_delaunay.h"
+
+#include <Eigen/Cholesky>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <set>
+
+#include "voronoi_test_support.h"
+
+using namespace homesh;
+
+namespace {
+
+// The first `count` seed sets of `size` seeds uniform in [0.05, 0.95]^2 in
+// general position for a grid step ds in metric M: no four seeds within 2
+// cells of cocircular (metric length), no Voronoi vertex within 8 cells of the
+// border. (Uniform random sets are mostly near-degenerate somewhere: a
+// Delaunay edge whose two triangles are nearly cocircular flips under the
+// scheme's O(ds) errors, as it would under any perturbation of that size.)
+std::vector<Eigen::Matrix2Xd> general_seed_sets(int count, int size, double ds,
+                                                const Eigen::Matrix2d& M) {
+  const Eigen::Matrix2d Lt = M.llt().matrixL().transpose();
+  const double cell = ds / metric_min_speed(M);
+  std::vector<Eigen::Matrix2Xd> out;
+  for (unsigned seed = 1; static_cast<int>(out.size()) < count; ++seed) {
+    const Eigen::Matrix2Xd seeds = test::uniform_seeds(size, seed, 0.05, 0.95);
+    const test::DelaunayInBox d = test::delaunay_in_box(seeds, 0.0, 1.0, Lt);
+    if (d.incircle_margin >= 2 * cell && d.border_margin >= 8 * ds) out.push_back(seeds);
+  }
+  return out;
+}
+
+VoronoiProblem unit_square(int n, const Eigen::Matrix2Xd& seeds, const MetricField& metric) {
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, n, n);
+  p.seeds = seeds;
+  p.metric = metric;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("in a constant isotropic metric the dual is CGAL's Delaunay triangulation",
+          "[voronoi][delaunay]") {
+  const int n = 401;
+  const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+  for (const Eigen::Matrix2Xd& seeds : general_seed_sets(1, 20, 1.0 / (n - 1), I)) {
+    const VoronoiDelaunay v = voronoi_delaunay(unit_square(n, seeds, MetricField::constant(I)));
+    CHECK(v.valid());
+    CHECK(test::rotated(v.dual.triangles) == test::delaunay_in_box(seeds, 0.0, 1.0).triangles);
+    CHECK(v.check.inverted == 0);
+    CHECK(v.check.euler == 1);
+    CHECK(v.dual.unjoined_triples == 0);
+    CHECK(v.dual.orientation_conflicts == 0);
+    // Every region adjacency was found as a collision, but for Voronoi edges
+    // shorter than the gaps between frozen fronts.
+    CHECK(v.dual.adjacency_edges <= 1);
+  }
+}
+
+TEST_CASE("in a constant anisotropic metric the dual is the Delaunay triangulation of the "
+          "mapped seeds",
+          "[voronoi][delaunay]") {
+  // With M = L L^T, |x|_M = |L^T x|: the metric Voronoi diagram is the
+  // Euclidean one of the seeds mapped by L^T.
+  const int n = 251;
+  const Eigen::Matrix2d M = metric_from_axes(0.6, 1.0, 0.4);
+  const Eigen::Matrix2d Lt = M.llt().matrixL().transpose();
+  for (const Eigen::Matrix2Xd& seeds : general_seed_sets(1, 15, 1.0 / (n - 1), M)) {
+    const VoronoiDelaunay v = voronoi_delaunay(unit_square(n, seeds, MetricField::constant(M)));
+    CHECK(v.valid());
+    const auto expected = test::delaunay_in_box(seeds, 0.0, 1.0, Lt).triangles;
+    CHECK(test::rotated(v.dual.triangles) == expected);
+    // Not the Euclidean triangulation: the metric matters here.
+    CHECK(test::delaunay_in_box(seeds, 0.0, 1.0).triangles != expected);
+  }
+}
+
+TEST_CASE("the five-seed example of Fig 2.2 under three metric fields", "[voronoi][delaunay]") {
+  const int n = 151;
+  Eigen::Matrix2Xd seeds(2, 5);
+  seeds << 0.5, 0.2, 0.82, 0.75, 0.28,  //
+      0.48, 0.25, 0.22, 0.8, 0.72;
+  // (a) constant isotropic, (c) constant anisotropic, (e) variable: on a 3 x 3
+  // coarse grid, ellipses turning from 0 to 90 degrees and stretching with x.
+  std::vector<Eigen::Matrix2d> variable;
+  const CartesianGrid coarse = CartesianGrid::spanning({0, 0}, {1, 1}, 3, 3);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) variable.push_back(metric_from_axes(M_PI / 4 * (i + j) / 2, 0.3 + 0.2 * i, 0.15));
+  const std::vector<MetricField> fields{MetricField::constant(Eigen::Matrix2d::Identity()),
+                                        MetricField::constant(metric_from_axes(M_PI / 6, 1.0, 0.35)),
+                                        MetricField(coarse, variable)};
+  std::vector<std::set<std::array<int, 3>>> duals;
+  for (std::size_t f = 0; f < fields.size(); ++f) {
+    INFO("metric field " << f);
+    const VoronoiDelaunay v = voronoi_delaunay(unit_square(n, seeds, fields[f]));
+    CHECK(v.valid());
+    CHECK(v.regions.regions.size() == 5);
+    duals.push_back(test::rotated(v.dual.triangles));
+    if (f < 2) {
+      const Eigen::Matrix2d Lt = fields[f].metric(0).llt().matrixL().transpose();
+      CHECK(duals.back() == test::delaunay_in_box(seeds, 0.0, 1.0, Lt).triangles);
+    }
+  }
+  // The centre seed joins all four others in the isotropic metric, not in
+  // the constant anisotropic one.
+  CHECK(duals[0] == std::set<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}});
+  CHECK(duals[1] == std::set<std::array<int, 3>>{{0, 1, 2}, {0, 3, 4}, {0, 4, 1}});
+}
+
+TEST_CASE("crystals in a disc conform to its boundary, wet or dry", "[voronoi][delaunay]") {
+  // A ring of seeds close to the boundary, a second ring, one centre seed.
+  const int n = 201;
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({-1, -1}, {1, 1}, n, n);
+  p.domain = sample_on_grid(p.grid, [](const Eigen::Vector2d& x) { return x.norm() - 0.9; });
+  const int K = 24;
+  p.seeds.resize(2, 2 * K + 1);
+  for (int k = 0; k < K; ++k) {
+    const double a = 2 * M_PI * k / K, b = 2 * M_PI * (k + 0.5) / K;
+    p.seeds.col(k) = 0.87 * Eigen::Vector2d(std::cos(a), std::sin(a));
+    p.seeds.col(K + k) = 0.6 * Eigen::Vector2d(std::cos(b), std::sin(b));
+  }
+  p.seeds.col(2 * K) = Eigen::Vector2d(0.03, -0.02);
+  for (const Contact contact : {Contact::dry, Contact::wet}) {
+    INFO((contact == Contact::dry ? "dry" : "wet"));
+    p.contact = contact;
+    const VoronoiDelaunay v = voronoi_delaunay(p);
+    CHECK(v.valid());
+    CHECK(v.regions.domain_euler == 1);
+    CHECK(v.check.euler == 1);
+    // Nodes outside the disc are in no crystal; the outer ring touched it.
+    int outside_labelled = 0;
+    for (int k = 0; k < p.grid.node_count(); ++k) outside_labelled += p.domain(k) > 0 && v.partition.labels(k) >= 0;
+    CHECK(outside_labelled == 0);
+    std::vector<int> outer(K);
+    for (int k = 0; k < K; ++k) outer[k] = k;
+    CHECK(v.partition.boundary_contacts == outer);
+    // A fan of K triangles at the centre and 2K in the band between the
+    // rings: F = 2V - 2 - (boundary vertices) for a triangulated disc.
+    CHECK(v.dual.triangles.size() == 3 * K);
+  }
+}
+
+TEST_CASE("the dual of an annulus has Euler characteristic 0", "[voronoi][delaunay]") {
+  const int n = 201;
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({-1, -1}, {1, 1}, n, n);
+  p.domain = sample_on_grid(p.grid, [](const Eigen::Vector2d& x) { return std::abs(x.norm() - 0.6) - 0.3; });
+  const int K = 16;
+  p.seeds.resize(2, 2 * K);
+  for (int k = 0; k < K; ++k) {
+    const double a = 2 * M_PI * k / K, b = 2 * M_PI * (k + 0.5) / K;
+    p.seeds.col(k) = 0.45 * Eigen::Vector2d(std::cos(a), std::sin(a));
+    p.seeds.col(K + k) = 0.75 * Eigen::Vector2d(std::cos(b), std::sin(b));
+  }
+  const VoronoiDelaunay v = voronoi_delaunay(p);
+  CHECK(v.valid());
+  CHECK(v.regions.domain_euler == 0);
+  CHECK(v.check.euler == 0);
+  CHECK(v.dual.triangles.size() == 2 * K);
+}
