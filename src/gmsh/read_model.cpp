@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/check_mesh.h"
 #include "core/error.h"
 
 namespace homesh::gmsh_adapter {
@@ -168,6 +169,7 @@ Mesh read_model(const std::string& source) {
       m.point_node.push_back(node_index(tag));
       m.point_entity.push_back(b.entity);
     }
+  check_mesh(m, source);
   return m;
 }
 

@@ -11,7 +11,7 @@ namespace homesh::gmsh_adapter {
 /// line and triangle elements. Node i of the result is the i-th node in
 /// increasing Gmsh tag order. Throws homesh::Error naming `source` if the model
 /// holds no triangles, 3D elements, non-triangle 2D elements, elements of mixed
-/// orders, or nodes off the plane z = 0.
+/// orders, nodes off the plane z = 0, or triangles check_mesh rejects.
 Mesh read_model(const std::string& source);
 
 /// True if the current model has a 2D mesh (any element of dimension 2).

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
@@ -110,6 +111,62 @@ TEST_CASE("bad input gets a clear error naming it, non-zero exit and no output",
   }
   std::remove(garbage.c_str());
   std::remove(empty.c_str());
+}
+
+namespace {
+
+// A MSH 2.2 file with 5 nodes and the given element lines ("type nodes...").
+std::string msh22(const std::string& name, const std::vector<std::string>& elements) {
+  const std::string path = "/tmp/homesh_bad_" + name + ".msh";
+  std::ofstream out(path);
+  out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n"
+         "4 0 1 0\n5 0.5 0 1\n$EndNodes\n$Elements\n"
+      << elements.size() << "\n";
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    std::istringstream in(elements[k]);
+    std::string type, rest;
+    in >> type;
+    std::getline(in, rest);
+    out << k + 1 << " " << type << " 2 0 1" << rest << "\n";
+  }
+  out << "$EndElements\n";
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("meshes homesh cannot take are refused with the reason", "[app]") {
+  const std::string out = "/tmp/homesh_cli_badmesh.msh";
+  std::remove(out.c_str());
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {msh22("quad", {"3 1 2 3 4"}), "type 'Quadrilateral 4'"},
+      {msh22("tet", {"2 1 2 3", "4 1 2 3 5"}), "has 3D elements"},
+      {msh22("inverted", {"2 1 2 3", "2 1 4 3"}), "triangle 2 at (0.333333, 0.666667) is inverted"},
+      {msh22("duplicate", {"2 1 2 3", "2 2 3 1"}), "duplicates another triangle"},
+      {msh22("lines", {"1 1 2"}), "has no triangles"},
+  };
+  for (const auto& [in, message] : cases) {
+    const auto r = run_homesh(in + " -m info " + out);
+    INFO(in << "\n" << r.output);
+    REQUIRE(r.exit_code != 0);
+    REQUIRE(r.output.find("homesh: error: " + in) != std::string::npos);
+    REQUIRE(r.output.find(message) != std::string::npos);
+    REQUIRE_FALSE(exists(out));
+    std::remove(in.c_str());
+  }
+}
+
+TEST_CASE("the same input gives byte-identical output", "[app]") {
+  const std::string out = "/tmp/homesh_cli_determinism.msh";
+  const std::string args = geo + "naca.geo -m mesh -m curve:p=3 -m quality " + out;
+  REQUIRE(run_homesh(args).exit_code == 0);
+  const std::string first = read(out), first_opt = read(out + ".opt");
+  REQUIRE(run_homesh(args).exit_code == 0);
+  REQUIRE(read(out) == first);
+  REQUIRE(read(out + ".opt") == first_opt);
+  REQUIRE(first.size() > 100000);
+  std::remove(out.c_str());
+  std::remove((out + ".opt").c_str());
 }
 
 TEST_CASE("a failed run leaves the previous output untouched", "[app]") {

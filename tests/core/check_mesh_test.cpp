@@ -1,0 +1,61 @@
+#include "core/check_mesh.h"
+
+#include <catch2/catch.hpp>
+#include <limits>
+
+#include "core/error.h"
+
+using namespace homesh;
+
+namespace {
+
+// Two counter-clockwise triangles on the unit square.
+Mesh square() {
+  Mesh m;
+  m.x.resize(2, 5);
+  m.x << 0, 1, 1, 0, 0.5, 0, 0, 1, 1, 0;
+  m.node_class.resize(5);
+  m.tri.resize(3, 2);
+  m.tri << 0, 0, 1, 2, 2, 3;
+  m.tri_entity = {1, 1};
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("check_mesh accepts a good mesh and names each defect", "[core]") {
+  Mesh m = square();
+  REQUIRE_NOTHROW(check_mesh(m, "in.msh"));
+
+  Mesh inverted = square();
+  std::swap(inverted.tri(1, 1), inverted.tri(2, 1));
+  REQUIRE_THROWS_WITH(check_mesh(inverted, "in.msh"),
+                      "in.msh: triangle 2 at (0.333333, 0.666667) is inverted (its corners run "
+                      "clockwise)");
+
+  Mesh flat = square();
+  flat.tri.col(1) << 0, 4, 1;  // (0,0), (0.5,0), (1,0): collinear
+  REQUIRE_THROWS_WITH(check_mesh(flat, "in.msh"), Catch::Contains("triangle 2") &&
+                                                      Catch::Contains("zero area"));
+
+  Mesh repeated = square();
+  repeated.tri.col(1) << 0, 2, 2;
+  REQUIRE_THROWS_WITH(check_mesh(repeated, "in.msh"), Catch::Contains("repeats a corner"));
+
+  Mesh duplicate = square();
+  duplicate.tri.col(1) << 1, 2, 0;  // same corners as triangle 1, rotated
+  REQUIRE_THROWS_WITH(check_mesh(duplicate, "in.msh"),
+                      Catch::Contains("triangle 2") && Catch::Contains("duplicates"));
+
+  Mesh nan = square();
+  nan.x(1, 3) = std::numeric_limits<double>::quiet_NaN();
+  REQUIRE_THROWS_WITH(check_mesh(nan, "in.msh"), "in.msh: node 4 has a non-finite coordinate");
+}
+
+TEST_CASE("check_mesh is scale-free: tiny and huge meshes pass", "[core]") {
+  for (double s : {1e-8, 1e8}) {
+    Mesh m = square();
+    m.x *= s;
+    REQUIRE_NOTHROW(check_mesh(m, "in.msh"));
+  }
+}
