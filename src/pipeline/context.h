@@ -1,7 +1,9 @@
 #pragma once
 // The state a pipeline of stages works on: the input's name, whether the
 // current Gmsh model carries CAD, the core mesh (the source of truth once
-// read), the fields that become views, and the log.
+// read), the fields that become views, numbers a stage reports (returned by
+// the Python module as result["results"]), and the log.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +19,8 @@ struct Context {
   bool has_cad = false;
   std::optional<Mesh> mesh;
   std::vector<Field> fields;
+  /// Named numbers the last stage reports (e.g. rotate's theta_max).
+  std::map<std::string, double> results;
   Log log;
   /// Write the output even if some element is not certified valid.
   bool keep_invalid = false;

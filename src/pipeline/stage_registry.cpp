@@ -8,12 +8,13 @@
 #include "pipeline/stages/mesh_stage.h"
 #include "pipeline/stages/order_stage.h"
 #include "pipeline/stages/quality_stage.h"
+#include "pipeline/stages/rotate_stage.h"
 
 namespace homesh {
 
 const std::vector<Stage>& stages() {
-  static const std::vector<Stage> table = {mesh_stage(), order_stage(), curve_stage(), quality_stage(),
-                                           info_stage()};
+  static const std::vector<Stage> table = {mesh_stage(), order_stage(), curve_stage(), rotate_stage(),
+                                           quality_stage(), info_stage()};
   return table;
 }
 

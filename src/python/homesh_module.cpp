@@ -50,6 +50,7 @@ py::dict run_stage(const std::string& name, const py::kwargs& kwargs) {
   s.run(ctx, options);
 
   py::dict result;
+  result["results"] = ctx.results;
   if (!ctx.mesh) return result;
   std::vector<int> views;
   gmsh_adapter::gmsh_call("writing the mesh into the current Gmsh model", [&] {
@@ -90,7 +91,8 @@ PYBIND11_MODULE(homesh, m) {
 
   m.def("run", &run_stage, py::arg("stage"),
         "Run a stage (see stages()) on the current Gmsh model, options as keyword arguments; "
-        "returns order, node and triangle counts and the tags of the views it added.");
+        "returns order, node and triangle counts, the tags of the views it added and the numbers "
+        "the stage reports (results).");
   m.def("write", &write_file, py::arg("path"),
         "Write the current model's mesh and views to a MSH 4.1 file (atomically) with its .opt "
         "sidecar.");
