@@ -7,8 +7,8 @@
 
 namespace homesh {
 
-CartesianGrid CartesianGrid::spanning(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
-                                      int nx, int ny) {
+CartesianGrid CartesianGrid::spanning(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int nx,
+                                      int ny) {
   if (nx < 2 || ny < 2) throw Error("CartesianGrid: need at least 2 by 2 nodes");
   if (!(hi.x() > lo.x() && hi.y() > lo.y())) throw Error("CartesianGrid: empty box");
   CartesianGrid g;

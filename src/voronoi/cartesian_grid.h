@@ -22,9 +22,7 @@ struct CartesianGrid {
   int index(int i, int j) const { return i + nx * j; }
   /// The geometric step of Eqs 2.4-2.5, ds = min(dx, dy).
   double ds() const { return dx < dy ? dx : dy; }
-  Eigen::Vector2d point(int i, int j) const {
-    return origin + Eigen::Vector2d(i * dx, j * dy);
-  }
+  Eigen::Vector2d point(int i, int j) const { return origin + Eigen::Vector2d(i * dx, j * dy); }
   /// The node nearest to p, clamped to the grid.
   Eigen::Vector2i nearest_node(const Eigen::Vector2d& p) const;
 };

@@ -4,6 +4,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
 #include <algorithm>
 #include <utility>
 
@@ -34,9 +35,8 @@ std::vector<std::array<int, 3>> cgal_delaunay_triangles(const Eigen::Matrix2Xd& 
 }
 
 int cgal_orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-  return static_cast<int>(CGAL::orientation(Kernel::Point_2(a.x(), a.y()),
-                                            Kernel::Point_2(b.x(), b.y()),
-                                            Kernel::Point_2(c.x(), c.y())));
+  return static_cast<int>(CGAL::orientation(
+      Kernel::Point_2(a.x(), a.y()), Kernel::Point_2(b.x(), b.y()), Kernel::Point_2(c.x(), c.y())));
 }
 
 }  // namespace homesh

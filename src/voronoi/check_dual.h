@@ -9,11 +9,11 @@
 namespace homesh {
 
 struct DualCheck {
-  int vertices = 0;   ///< seeds with a region
+  int vertices = 0;  ///< seeds with a region
   int edges = 0;
   int triangles = 0;
-  int euler = 0;            ///< vertices - edges + triangles
-  int expected_euler = 1;   ///< Euler characteristic of the domain
+  int euler = 0;           ///< vertices - edges + triangles
+  int expected_euler = 1;  ///< Euler characteristic of the domain
   /// Interior edges (interface not reaching the boundary) in other than two
   /// triangles.
   int bad_interior_edges = 0;

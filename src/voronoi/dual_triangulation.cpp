@@ -49,7 +49,8 @@ DualTriangulation dual_triangulation(const CartesianGrid& g, const Eigen::Vector
   for (int j = 0; j < g.ny; ++j) {
     for (int i = 0; i < g.nx; ++i) {
       const int a = labels(g.index(i, j));
-      for (const int n : {i + 1 < g.nx ? g.index(i + 1, j) : -1, j + 1 < g.ny ? g.index(i, j + 1) : -1}) {
+      for (const int n :
+           {i + 1 < g.nx ? g.index(i + 1, j) : -1, j + 1 < g.ny ? g.index(i, j + 1) : -1}) {
         if (n < 0 || a < 0 || labels(n) < 0 || labels(n) == a) continue;
         if (edges.insert(pair_of(a, labels(n))).second) ++out.adjacency_edges;
       }
@@ -62,7 +63,8 @@ DualTriangulation dual_triangulation(const CartesianGrid& g, const Eigen::Vector
       // Labels counter-clockwise round the cell, unlabelled corners skipped,
       // repeats of a neighbouring corner merged.
       std::vector<int> seq;
-      for (const int n : {g.index(i, j), g.index(i + 1, j), g.index(i + 1, j + 1), g.index(i, j + 1)})
+      for (const int n :
+           {g.index(i, j), g.index(i + 1, j), g.index(i + 1, j + 1), g.index(i, j + 1)})
         if (labels(n) >= 0 && (seq.empty() || seq.back() != labels(n))) seq.push_back(labels(n));
       while (seq.size() > 1 && seq.front() == seq.back()) seq.pop_back();
       std::set<int> distinct(seq.begin(), seq.end());

@@ -26,8 +26,9 @@ GrowthField::GrowthField(const VoronoiProblem& problem)
   if (domain_.size() != n)
     throw Error("voronoi: domain has " + std::to_string(domain_.size()) + " values for " +
                 std::to_string(n) + " grid nodes");
-  // The contact band: two cells into the boundary crystal.
-  const double width = 2.0 * g.ds();
+  // The contact band: one cell into the boundary crystal, so that a wall of
+  // three cells or more has a core no crystal enters.
+  const double width = g.ds();
   zone_.assign(n, inside);
   normal_.assign(n, Eigen::Vector2d::Zero());
   inside_count_ = 0;
@@ -42,8 +43,9 @@ GrowthField::GrowthField(const VoronoiProblem& problem)
       zone_[k] = d <= width ? contact : outside;
       const int il = i > 0 ? i - 1 : i, ir = i + 1 < g.nx ? i + 1 : i;
       const int jl = j > 0 ? j - 1 : j, jr = j + 1 < g.ny ? j + 1 : j;
-      const Eigen::Vector2d grad((domain_(g.index(ir, j)) - domain_(g.index(il, j))) / ((ir - il) * g.dx),
-                                 (domain_(g.index(i, jr)) - domain_(g.index(i, jl))) / ((jr - jl) * g.dy));
+      const Eigen::Vector2d grad(
+          (domain_(g.index(ir, j)) - domain_(g.index(il, j))) / ((ir - il) * g.dx),
+          (domain_(g.index(i, jr)) - domain_(g.index(i, jl))) / ((jr - jl) * g.dy));
       if (grad.norm() > 0.0) normal_[k] = grad.normalized();
     }
   }

@@ -15,7 +15,7 @@ class GrowthField {
   /// Where a node sits with respect to the domain.
   enum Zone : std::uint8_t {
     inside,   ///< domain <= 0: grown into and labelled
-    contact,  ///< 0 < domain <= contact_width: in the boundary crystal, near it
+    contact,  ///< 0 < domain <= ds: the boundary crystal's first cell
     outside,  ///< beyond: never updated
   };
 
@@ -42,7 +42,7 @@ class GrowthField {
   Eigen::VectorXd domain_;
   std::vector<std::uint8_t> zone_;
   std::vector<Eigen::Vector2d> normal_;
-  bool uniform_ = false;                 ///< one metric everywhere: no stencils
+  bool uniform_ = false;  ///< one metric everywhere: no stencils
   std::vector<ShepardStencil> stencil_;
   int inside_count_ = 0;
 };

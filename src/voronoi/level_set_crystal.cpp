@@ -63,7 +63,8 @@ void LevelSetCrystal::fit_box(double t) {
   std::vector<std::uint8_t> frozen(phi.size(), 0);
   for (int j = grown.j0; j <= grown.j1; ++j) {
     for (int i = grown.i0; i <= grown.i1; ++i) {
-      const std::size_t k = (i - grown.i0) + static_cast<std::size_t>(grown.width()) * (j - grown.j0);
+      const std::size_t k =
+          (i - grown.i0) + static_cast<std::size_t>(grown.width()) * (j - grown.j0);
       if (box_.contains(i, j)) {
         phi[k] = phi_[local(i, j)];
         frozen[k] = frozen_[local(i, j)];

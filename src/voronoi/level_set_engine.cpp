@@ -22,7 +22,7 @@ constexpr int kTile = 16;
 class TileIndex {
  public:
   explicit TileIndex(const CartesianGrid& g)
-      : tx_((g.nx + kTile - 1) / kTile), ty_((g.ny + kTile - 1) / kTile), lists_(tx_ * ty_) {}
+      : tx_((g.nx + kTile - 1) / kTile), lists_(tx_ * ((g.ny + kTile - 1) / kTile)) {}
 
   void rebuild(const std::vector<LevelSetCrystal>& crystals) {
     for (auto& l : lists_) l.clear();
@@ -35,7 +35,7 @@ class TileIndex {
   const std::vector<int>& at(int i, int j) const { return lists_[i / kTile + tx_ * (j / kTile)]; }
 
  private:
-  int tx_, ty_;
+  int tx_;
   std::vector<std::vector<int>> lists_;
 };
 
@@ -49,8 +49,8 @@ struct Reset {
 // linearly; a crystal k with phi_k(x) <= 0 has collided with s, and both are
 // reset and frozen at the two nodes, which no third crystal may enter either
 // (else it creeps along the gap left between the two frozen fronts). A
-// crossing with domain(x) >= 0 touches
-// the boundary crystal, which is wet (freezes s) or dry (Eq 2.13 acts instead).
+// crossing with domain(x) >= 0 touches the boundary crystal, which is wet
+// (freezes s) or dry (Eq 2.13 acts instead).
 void find_collisions(int s, int di, int dj, const std::vector<LevelSetCrystal>& crystals,
                      const TileIndex& tiles, const GrowthField& field,
                      std::set<std::array<int, 2>>& collisions, std::vector<char>& contacts,
@@ -64,22 +64,23 @@ void find_collisions(int s, int di, int dj, const std::vector<LevelSetCrystal>& 
       const double v0 = c.next(i, j), v1 = c.next(i + di, j + dj);
       if (v0 * v1 > 0.0) continue;
       const double theta = v0 == v1 ? 0.0 : v0 / (v0 - v1);
+      const double d =
+          (1 - theta) * field.domain(g.index(i, j)) + theta * field.domain(g.index(i + di, j + dj));
       for (const int k : tiles.at(i, j)) {
         if (k == s) continue;
         const NodeBox& bk = crystals[k].box();
         if (!bk.contains(i, j) || !bk.contains(i + di, j + dj)) continue;
         const LevelSetCrystal& o = crystals[k];
         if ((1 - theta) * o.next(i, j) + theta * o.next(i + di, j + dj) > 0.0) continue;
-        collisions.insert({std::min(s, k), std::max(s, k)});
+        // Crystals meeting inside the boundary crystal (across a thin part of
+        // it) are stopped but are not neighbours.
+        if (d < 0.0 || !field.has_domain()) collisions.insert({std::min(s, k), std::max(s, k)});
         for (const int m : {s, k}) {
           resets.push_back({m, i, j, true});
           resets.push_back({m, i + di, j + dj, true});
         }
       }
-      if (!field.has_domain()) continue;
-      const double d = (1 - theta) * field.domain(g.index(i, j)) +
-                       theta * field.domain(g.index(i + di, j + dj));
-      if (d < 0.0) continue;
+      if (!field.has_domain() || d < 0.0) continue;
       contacts[s] = 1;
       if (wet) {
         resets.push_back({s, i, j, false});
@@ -87,6 +88,34 @@ void find_collisions(int s, int di, int dj, const std::vector<LevelSetCrystal>& 
       }
     }
   }
+}
+
+// Extreme speeds over the metrics the crystals grow in, and whether they are
+// all isotropic (M proportional to I).
+struct Speeds {
+  double max = 0.0;
+  double min = std::numeric_limits<double>::infinity();
+  bool isotropic = true;
+};
+
+Speeds speed_range(const VoronoiProblem& problem, const GrowthField& field) {
+  const auto round = [](const Eigen::Matrix2d& M) {
+    return std::abs(M(0, 1)) <= 1e-12 * M.norm() && std::abs(M(0, 0) - M(1, 1)) <= 1e-12 * M.norm();
+  };
+  Speeds out;
+  if (problem.seed_metrics.empty()) {
+    out.max = field.metric().max_speed();
+    out.min = field.metric().min_speed();
+    for (int k = 0; k < field.metric().coarse().node_count(); ++k)
+      out.isotropic = out.isotropic && round(field.metric().metric(k));
+    return out;
+  }
+  for (const Eigen::Matrix2d& M : problem.seed_metrics) {
+    out.max = std::max(out.max, metric_max_speed(M));
+    out.min = std::min(out.min, metric_min_speed(M));
+    out.isotropic = out.isotropic && round(M);
+  }
+  return out;
 }
 
 // Metric radius of each seed crystal, a ball of the seed's metric M_s: the
@@ -135,7 +164,6 @@ Eigen::VectorXi label_nodes(const std::vector<LevelSetCrystal>& crystals, const 
         }
       }
   }
-  uncovered = 0;
   std::vector<int> gaps;
   for (int node = 0; node < g.node_count(); ++node)
     if (field.zone(node) == GrowthField::inside && labels(node) < 0) gaps.push_back(node);
@@ -152,7 +180,8 @@ Eigen::VectorXi label_nodes(const std::vector<LevelSetCrystal>& crystals, const 
     for (const int node : gaps) {
       const int i = node % g.nx, j = node / g.nx;
       int pick = -1;
-      for (const auto& [a, b] : {std::array<int, 2>{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}}) {
+      for (const auto& [a, b] :
+           {std::array<int, 2>{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}}) {
         if (a < 0 || b < 0 || a >= g.nx || b >= g.ny) continue;
         const int l = labels(g.index(a, b));
         if (l >= 0 && (pick < 0 || phi(l, i, j) < phi(pick, i, j))) pick = l;
@@ -178,35 +207,20 @@ CrystalPartition grow_crystals_level_set(const VoronoiProblem& problem,
   if (S == 0) throw Error("voronoi: no seeds");
   const bool own = !problem.seed_metrics.empty();
   if (own && static_cast<int>(problem.seed_metrics.size()) != S)
-    throw Error("voronoi: " + std::to_string(problem.seed_metrics.size()) +
-                " seed metrics for " + std::to_string(S) + " seeds");
+    throw Error("voronoi: " + std::to_string(problem.seed_metrics.size()) + " seed metrics for " +
+                std::to_string(S) + " seeds");
   if (!(options.cfl >= 0.0 && options.cfl <= 1.0))
     throw Error("voronoi: cfl must be in [0, 1] (Section 2.3; 0: automatic)");
   const GrowthField field(problem);
 
-  double max_f = field.metric().max_speed(), min_f = field.metric().min_speed();
-  bool isotropic = true;
-  const auto round = [](const Eigen::Matrix2d& M) {
-    return std::abs(M(0, 1)) <= 1e-12 * M.norm() && std::abs(M(0, 0) - M(1, 1)) <= 1e-12 * M.norm();
-  };
-  if (own) {
-    max_f = 0.0;
-    min_f = std::numeric_limits<double>::infinity();
-    for (const Eigen::Matrix2d& M : problem.seed_metrics) {
-      max_f = std::max(max_f, metric_max_speed(M));
-      min_f = std::min(min_f, metric_min_speed(M));
-      isotropic = isotropic && round(M);
-    }
-  } else {
-    for (int k = 0; k < field.metric().coarse().node_count(); ++k)
-      isotropic = isotropic && round(field.metric().metric(k));
-  }
+  const Speeds speeds = speed_range(problem, field);
+  const double max_f = speeds.max, min_f = speeds.min;
   // In a rotated anisotropic metric the scheme drifts ahead in the directions
   // between the axes at cfl ~ 1 (a few percent of the distance grown at an
   // aspect ratio of 3); cfl = 1/2 keeps it within a few cells. In an isotropic
   // metric cfl = 1 is the most accurate (the update is then exact along the
   // grid axes).
-  const double cfl = options.cfl > 0.0 ? options.cfl : (isotropic ? 1.0 : 0.5);
+  const double cfl = options.cfl > 0.0 ? options.cfl : (speeds.isotropic ? 1.0 : 0.5);
   std::vector<Eigen::Matrix2d> shape(S);
   for (int s = 0; s < S; ++s) {
     const Eigen::Vector2d p = problem.seeds.col(s);
@@ -259,8 +273,8 @@ CrystalPartition grow_crystals_level_set(const VoronoiProblem& problem,
   std::vector<Reset> resets;
   std::vector<int> newly;
   int idle = 0;
-  const double stop = options.stop_time > 0.0 ? options.stop_time
-                                              : std::numeric_limits<double>::infinity();
+  const double stop =
+      options.stop_time > 0.0 ? options.stop_time : std::numeric_limits<double>::infinity();
   while (out.steps < max_steps && t < stop) {
     const double step = std::min(dt, stop - t);
     bool waiting = false;

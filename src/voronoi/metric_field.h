@@ -41,8 +41,8 @@ inline double metric_speed(const Eigen::Matrix2d& Minv, const Eigen::Vector2d& N
 /// cell that holds a point: w_k = d_k^-2 / sum_l d_l^-2, or weight 1 on a corner
 /// the point coincides with. Points outside the coarse grid are clamped to it.
 struct ShepardStencil {
-  std::array<int, 4> node{};   ///< coarse node indices
-  std::array<double, 4> w{};   ///< weights, sum 1
+  std::array<int, 4> node{};  ///< coarse node indices
+  std::array<double, 4> w{};  ///< weights, sum 1
 };
 
 /// A metric tensor at each node of a coarse Cartesian grid (Section 2.4,

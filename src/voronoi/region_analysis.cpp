@@ -47,8 +47,8 @@ RegionReport analyse_regions(const CartesianGrid& g, const Eigen::VectorXi& labe
   const auto inside = [&](int n) { return domain.size() == 0 || domain(n) <= 0.0; };
   const auto on_boundary = [&](int i, int j) {
     if (i == 0 || j == 0 || i == g.nx - 1 || j == g.ny - 1) return true;
-    return !inside(g.index(i - 1, j)) || !inside(g.index(i + 1, j)) ||
-           !inside(g.index(i, j - 1)) || !inside(g.index(i, j + 1));
+    return !inside(g.index(i - 1, j)) || !inside(g.index(i + 1, j)) || !inside(g.index(i, j - 1)) ||
+           !inside(g.index(i, j + 1));
   };
 
   RegionReport out;
@@ -58,6 +58,7 @@ RegionReport analyse_regions(const CartesianGrid& g, const Eigen::VectorXi& labe
       g, [&](int n) { return inside(n) && labels(n) >= 0; },
       [&](int n, int m) { return labels(n) == labels(m); }, true, id);
   out.regions.resize(count);
+  std::vector<int> first_node(count, -1);
   std::vector<std::set<int>> neighbours(count);
   std::set<std::array<int, 2>> adjacent, boundary_pairs;
   for (int j = 0; j < g.ny; ++j) {
@@ -69,6 +70,7 @@ RegionReport analyse_regions(const CartesianGrid& g, const Eigen::VectorXi& labe
         continue;
       }
       Region& r = out.regions[id[n]];
+      if (r.nodes == 0) first_node[id[n]] = n;
       r.label = labels(n);
       ++r.nodes;
       const bool edge_node = on_boundary(i, j);
@@ -79,7 +81,8 @@ RegionReport analyse_regions(const CartesianGrid& g, const Eigen::VectorXi& labe
         if (!inside(m) || labels(m) < 0 || labels(m) == labels(n)) continue;
         neighbours[id[n]].insert(labels(m));
         neighbours[id[m]].insert(labels(n));
-        const std::array<int, 2> pair{std::min(labels(n), labels(m)), std::max(labels(n), labels(m))};
+        const std::array<int, 2> pair{std::min(labels(n), labels(m)),
+                                      std::max(labels(n), labels(m))};
         adjacent.insert(pair);
         if (edge_node || on_boundary(a, b)) boundary_pairs.insert(pair);
       }
@@ -99,7 +102,8 @@ RegionReport analyse_regions(const CartesianGrid& g, const Eigen::VectorXi& labe
     const Eigen::Vector2i p = g.nearest_node(seeds.col(s));
     double best = std::numeric_limits<double>::infinity();
     for (int j = std::max(p.y() - kSeedReach, 0); j <= std::min(p.y() + kSeedReach, g.ny - 1); ++j)
-      for (int i = std::max(p.x() - kSeedReach, 0); i <= std::min(p.x() + kSeedReach, g.nx - 1); ++i) {
+      for (int i = std::max(p.x() - kSeedReach, 0); i <= std::min(p.x() + kSeedReach, g.nx - 1);
+           ++i) {
         const int n = g.index(i, j);
         const double d = (g.point(i, j) - seeds.col(s)).squaredNorm();
         if (inside(n) && labels(n) == s && d < best) {
@@ -112,21 +116,25 @@ RegionReport analyse_regions(const CartesianGrid& g, const Eigen::VectorXi& labe
     else
       out.missing.push_back(s);
   }
-  int seeded = 0;
+  // The connected parts of the domain (4-neighbour), and the seeded regions
+  // in each.
+  std::vector<int> part;
+  const int parts = components(g, inside, any, false, part);
+  std::vector<int> seeded_in_part(parts, 0);
   for (int c = 0; c < count; ++c) {
     if (out.regions[c].seeded)
-      ++seeded;
+      ++seeded_in_part[part[first_node[c]]];
     else
       out.orphans.push_back(c);
   }
-  if (seeded >= 3)
-    for (int s = 0; s < seeds.cols(); ++s)
-      if (region_of_seed[s] >= 0 && out.regions[region_of_seed[s]].neighbours.size() == 1)
-        out.isolated.push_back(s);
+  for (int s = 0; s < seeds.cols(); ++s) {
+    const int c = region_of_seed[s];
+    if (c >= 0 && out.regions[c].neighbours.size() == 1 && seeded_in_part[part[first_node[c]]] >= 3)
+      out.isolated.push_back(s);
+  }
 
   if (domain.size() > 0) {
     std::vector<int> outside_id;
-    const int parts = components(g, inside, any, false, id);
     const int outside_parts = components(
         g, [&](int n) { return !inside(n); }, any, true, outside_id);
     std::vector<int> open(outside_parts, 0);

@@ -18,17 +18,18 @@ struct Region {
   int label = -1;
   int nodes = 0;
   bool seeded = false;  ///< holds the node with its label nearest its seed (within 2 cells)
-  bool touches_boundary = false;   ///< has a node on the grid border or next to the outside
-  std::vector<int> neighbours;     ///< labels of the regions sharing a grid edge, sorted
+  bool touches_boundary = false;  ///< has a node on the grid border or next to the outside
+  std::vector<int> neighbours;    ///< labels of the regions sharing a grid edge, sorted
 };
 
 struct RegionReport {
   std::vector<Region> regions;
   /// Indices into regions of the regions holding no seed (orphans).
   std::vector<int> orphans;
-  /// Seeds whose region has exactly one neighbouring region while there are
-  /// at least three regions: interior to another region, or engulfed against
-  /// the boundary (Fig 2.3a). Such a seed is a vertex of no dual triangle.
+  /// Seeds whose region has exactly one neighbouring region while its part of
+  /// the domain holds at least three regions: interior to another region, or
+  /// engulfed against the boundary (Fig 2.3a). Such a seed is a vertex of no
+  /// dual triangle.
   std::vector<int> isolated;
   /// Seeds with no region at all (their crystal was swallowed).
   std::vector<int> missing;

@@ -27,7 +27,8 @@ const std::vector<VoronoiEngine>& voronoi_engines();
 const VoronoiEngine& voronoi_engine(const std::string& name);
 
 /// voronoi_engine(engine).run(problem, options).
-CrystalPartition grow_crystals(const VoronoiProblem& problem, const std::string& engine = "level_set",
+CrystalPartition grow_crystals(const VoronoiProblem& problem,
+                               const std::string& engine = "level_set",
                                const VoronoiOptions& options = {});
 
 }  // namespace homesh

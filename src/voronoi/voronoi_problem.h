@@ -23,8 +23,8 @@ enum class Contact {
 };
 
 struct VoronoiProblem {
-  CartesianGrid grid;     ///< the fine grid the crystals grow on
-  Eigen::Matrix2Xd seeds; ///< 2 by S, one crystal per column
+  CartesianGrid grid;      ///< the fine grid the crystals grow on
+  Eigen::Matrix2Xd seeds;  ///< 2 by S, one crystal per column
   MetricField metric = MetricField::constant(Eigen::Matrix2d::Identity());
   /// Optional, S metrics: crystal s grows in the constant metric
   /// seed_metrics[s] (the Labelle-Shewchuk example, Fig 2.4) instead of `metric`.
@@ -71,8 +71,8 @@ struct CrystalPartition {
   /// smallest level-set value: gaps left between frozen fronts).
   int uncovered = 0;
   int steps = 0;
-  double time = 0.0;       ///< final time (metric length grown)
-  bool settled = false;    ///< false if stopped by max_steps or stop_time
+  double time = 0.0;     ///< final time (metric length grown)
+  bool settled = false;  ///< false if stopped by max_steps or stop_time
 };
 
 }  // namespace homesh

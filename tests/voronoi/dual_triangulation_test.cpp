@@ -27,8 +27,7 @@ const MetricField kEuclid = MetricField::constant(Eigen::Matrix2d::Identity());
 
 }  // namespace
 
-TEST_CASE("the dual of exact Voronoi labels is CGAL's Delaunay triangulation",
-          "[voronoi][dual]") {
+TEST_CASE("the dual of exact Voronoi labels is CGAL's Delaunay triangulation", "[voronoi][dual]") {
   const int n = 301;
   const double ds = 1.0 / (n - 1);
   const CartesianGrid g = CartesianGrid::spanning({0, 0}, {1, 1}, n, n);
@@ -54,9 +53,10 @@ TEST_CASE("the dual of exact Voronoi labels is CGAL's Delaunay triangulation",
   }
 }
 
-TEST_CASE("a 4-label cell is split by the collided diagonal, else by the in-circle test "
-          "in the local metric",
-          "[voronoi][dual]") {
+TEST_CASE(
+    "a 4-label cell is split by the collided diagonal, else by the in-circle test "
+    "in the local metric",
+    "[voronoi][dual]") {
   // Regions 0, 1, 2, 3 counter-clockwise round the centre cell of a 10 x 10
   // grid: seeds of a rhombus, short diagonal 1-3 (vertical).
   const CartesianGrid g = CartesianGrid::spanning({0, 0}, {1, 1}, 10, 10);
@@ -164,6 +164,8 @@ TEST_CASE("analyse_regions: orphans, isolated regions, domain topology", "[voron
   CHECK(euler([](const Eigen::Vector2d& x) { return x.norm() - 0.8; }) == 1);
   CHECK(euler([](const Eigen::Vector2d& x) { return std::abs(x.norm() - 0.6) - 0.25; }) == 0);
   CHECK(euler([](const Eigen::Vector2d& x) {
-          return std::min((x - Eigen::Vector2d(0.5, 0)).norm(), (x + Eigen::Vector2d(0.5, 0)).norm()) - 0.3;
+          return std::min((x - Eigen::Vector2d(0.5, 0)).norm(),
+                          (x + Eigen::Vector2d(0.5, 0)).norm()) -
+                 0.3;
         }) == 2);
 }

@@ -84,7 +84,8 @@ TEST_CASE("an isolated crystal in a constant anisotropic metric grows as the met
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
   const double a = 2 * std::sqrt(eig.eigenvalues()(1)), b = 2 * std::sqrt(eig.eigenvalues()(0));
   const Eigen::Vector2d major = eig.eigenvectors().col(1);
-  const double angle = std::acos(std::abs(major.dot(Eigen::Vector2d(std::cos(theta), std::sin(theta)))));
+  const double angle =
+      std::acos(std::abs(major.dot(Eigen::Vector2d(std::cos(theta), std::sin(theta)))));
   CHECK(mean.norm() < 0.5 * ds);
   CHECK(angle < 1.0 * M_PI / 180);
   CHECK(std::abs(a - h1 * t) < 4.0 * ds);
@@ -111,7 +112,8 @@ TEST_CASE("two crystals meet on the bisector of their seeds in the metric",
     p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, n, n);
     p.seeds.resize(2, 2);
     p.seeds << 0.3, 0.7, 0.35, 0.6;
-    const Eigen::Matrix2d M = anisotropic ? metric_from_axes(-0.4, 0.3, 0.15) : Eigen::Matrix2d::Identity();
+    const Eigen::Matrix2d M =
+        anisotropic ? metric_from_axes(-0.4, 0.3, 0.15) : Eigen::Matrix2d::Identity();
     p.metric = MetricField::constant(M);
     const CrystalPartition r = grow_crystals(p);
     CHECK(r.settled);
@@ -141,8 +143,7 @@ TEST_CASE("two crystals meet on the bisector of their seeds in the metric",
   }
 }
 
-TEST_CASE("crystals with their own metrics meet on the Apollonius circle",
-          "[voronoi][level_set]") {
+TEST_CASE("crystals with their own metrics meet on the Apollonius circle", "[voronoi][level_set]") {
   // Seed a grows in |x|/h_a, seed b in |x|/h_b (VoronoiProblem::seed_metrics,
   // as in Fig 2.4): the interface |x - a| / |x - b| = h_a / h_b = k is the
   // circle of centre (k^2 b - a) / (k^2 - 1) and radius k |b - a| / (k^2 - 1)

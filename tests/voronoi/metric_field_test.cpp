@@ -13,7 +13,8 @@ TEST_CASE("metric_from_axes: unit ball with semi-axis h1 at angle theta (Eq 2.7)
           "[voronoi][metric]") {
   const double theta = 0.5, h1 = 0.6, h2 = 0.2;
   const Eigen::Matrix2d M = metric_from_axes(theta, h1, h2);
-  const Eigen::Vector2d major(std::cos(theta), std::sin(theta)), minor(-std::sin(theta), std::cos(theta));
+  const Eigen::Vector2d major(std::cos(theta), std::sin(theta)),
+      minor(-std::sin(theta), std::cos(theta));
   // The points h1 * major and h2 * minor lie on the unit ball's boundary.
   CHECK((h1 * major).dot(M * (h1 * major)) == Approx(1.0).epsilon(1e-14));
   CHECK((h2 * minor).dot(M * (h2 * minor)) == Approx(1.0).epsilon(1e-14));
@@ -26,8 +27,7 @@ TEST_CASE("metric_from_axes: unit ball with semi-axis h1 at angle theta (Eq 2.7)
   CHECK_THROWS_AS(metric_from_axes(0.0, 0.0, 1.0), Error);
 }
 
-TEST_CASE("metric_speed is the support function of the metric's unit ball",
-          "[voronoi][metric]") {
+TEST_CASE("metric_speed is the support function of the metric's unit ball", "[voronoi][metric]") {
   // h(N) = max over the ellipse x^T M x = 1 of N . x, sampled finely.
   const Eigen::Matrix2d M = metric_from_axes(-1.1, 2.0, 0.25);
   const Eigen::Matrix2d Minv = M.inverse();
@@ -49,7 +49,8 @@ TEST_CASE("MetricField: Shepard weights of the 4 corners and the speed average",
           "[voronoi][metric]") {
   const CartesianGrid coarse = CartesianGrid::spanning({0, 0}, {2, 1}, 3, 2);
   std::vector<Eigen::Matrix2d> M;
-  for (int k = 0; k < coarse.node_count(); ++k) M.push_back(metric_from_axes(0.3 * k, 1.0 + k, 0.5));
+  for (int k = 0; k < coarse.node_count(); ++k)
+    M.push_back(metric_from_axes(0.3 * k, 1.0 + k, 0.5));
   const MetricField field(coarse, M);
   CHECK(field.max_speed() == Approx(6.0));
   CHECK(field.min_speed() == Approx(0.5));

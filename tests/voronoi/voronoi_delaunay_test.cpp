@@ -58,9 +58,10 @@ TEST_CASE("in a constant isotropic metric the dual is CGAL's Delaunay triangulat
   }
 }
 
-TEST_CASE("in a constant anisotropic metric the dual is the Delaunay triangulation of the "
-          "mapped seeds",
-          "[voronoi][delaunay]") {
+TEST_CASE(
+    "in a constant anisotropic metric the dual is the Delaunay triangulation of the "
+    "mapped seeds",
+    "[voronoi][delaunay]") {
   // With M = L L^T, |x|_M = |L^T x|: the metric Voronoi diagram is the
   // Euclidean one of the seeds mapped by L^T.
   const int n = 251;
@@ -86,10 +87,11 @@ TEST_CASE("the five-seed example of Fig 2.2 under three metric fields", "[vorono
   std::vector<Eigen::Matrix2d> variable;
   const CartesianGrid coarse = CartesianGrid::spanning({0, 0}, {1, 1}, 3, 3);
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) variable.push_back(metric_from_axes(M_PI / 4 * (i + j) / 2, 0.3 + 0.2 * i, 0.15));
-  const std::vector<MetricField> fields{MetricField::constant(Eigen::Matrix2d::Identity()),
-                                        MetricField::constant(metric_from_axes(M_PI / 6, 1.0, 0.35)),
-                                        MetricField(coarse, variable)};
+    for (int i = 0; i < 3; ++i)
+      variable.push_back(metric_from_axes(M_PI / 4 * (i + j) / 2, 0.3 + 0.2 * i, 0.15));
+  const std::vector<MetricField> fields{
+      MetricField::constant(Eigen::Matrix2d::Identity()),
+      MetricField::constant(metric_from_axes(M_PI / 6, 1.0, 0.35)), MetricField(coarse, variable)};
   std::vector<std::set<std::array<int, 3>>> duals;
   for (std::size_t f = 0; f < fields.size(); ++f) {
     INFO("metric field " << f);
@@ -131,7 +133,8 @@ TEST_CASE("crystals in a disc conform to its boundary, wet or dry", "[voronoi][d
     CHECK(v.check.euler == 1);
     // Nodes outside the disc are in no crystal; the outer ring touched it.
     int outside_labelled = 0;
-    for (int k = 0; k < p.grid.node_count(); ++k) outside_labelled += p.domain(k) > 0 && v.partition.labels(k) >= 0;
+    for (int k = 0; k < p.grid.node_count(); ++k)
+      outside_labelled += p.domain(k) > 0 && v.partition.labels(k) >= 0;
     CHECK(outside_labelled == 0);
     std::vector<int> outer(K);
     for (int k = 0; k < K; ++k) outer[k] = k;
@@ -146,7 +149,8 @@ TEST_CASE("the dual of an annulus has Euler characteristic 0", "[voronoi][delaun
   const int n = 201;
   VoronoiProblem p;
   p.grid = CartesianGrid::spanning({-1, -1}, {1, 1}, n, n);
-  p.domain = sample_on_grid(p.grid, [](const Eigen::Vector2d& x) { return std::abs(x.norm() - 0.6) - 0.3; });
+  p.domain = sample_on_grid(
+      p.grid, [](const Eigen::Vector2d& x) { return std::abs(x.norm() - 0.6) - 0.3; });
   const int K = 16;
   p.seeds.resize(2, 2 * K);
   for (int k = 0; k < K; ++k) {
@@ -159,4 +163,26 @@ TEST_CASE("the dual of an annulus has Euler characteristic 0", "[voronoi][delaun
   CHECK(v.regions.domain_euler == 0);
   CHECK(v.check.euler == 0);
   CHECK(v.dual.triangles.size() == 2 * K);
+}
+
+TEST_CASE("crystals meeting inside a thin wall of the boundary are not neighbours",
+          "[voronoi][delaunay]") {
+  // A wall 3 cells thick across the square splits the domain in two: the
+  // contact bands of the two sides overlap inside it.
+  const int n = 101;
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, n, n);
+  p.domain = sample_on_grid(p.grid,
+                            [](const Eigen::Vector2d& x) { return 0.015 - std::abs(x.y() - 0.5); });
+  p.seeds.resize(2, 4);
+  p.seeds << 0.3, 0.7, 0.4, 0.6,  //
+      0.3, 0.25, 0.7, 0.75;
+  for (const Contact contact : {Contact::dry, Contact::wet}) {
+    p.contact = contact;
+    const VoronoiDelaunay v = voronoi_delaunay(p);
+    CHECK(v.valid());
+    CHECK(v.regions.domain_euler == 2);
+    CHECK(v.partition.collisions == std::vector<std::array<int, 2>>{{0, 1}, {2, 3}});
+    CHECK(v.check.euler == 2);
+  }
 }

@@ -33,7 +33,8 @@ inline Eigen::Vector2d circumcentre(const Eigen::Vector2d& a, const Eigen::Vecto
   const Eigen::Vector2d u = b - a, v = c - a;
   const double d = 2.0 * (u.x() * v.y() - u.y() * v.x());
   return a + Eigen::Vector2d(v.y() * u.squaredNorm() - u.y() * v.squaredNorm(),
-                             u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) / d;
+                             u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) /
+                 d;
 }
 
 /// Signed distance of p into the box [lo, hi]^2 (> 0 inside).
@@ -71,7 +72,8 @@ inline DelaunayInBox delaunay_in_box(const Eigen::Matrix2Xd& seeds, double lo, d
     if (depth < -0.05 * (hi - lo)) continue;
     for (int q = 0; q < seeds.cols(); ++q)
       if (q != t[0] && q != t[1] && q != t[2])
-        out.incircle_margin = std::min(out.incircle_margin, std::abs((mapped.col(q) - c).norm() - R));
+        out.incircle_margin =
+            std::min(out.incircle_margin, std::abs((mapped.col(q) - c).norm() - R));
   }
   return out;
 }
