@@ -5,15 +5,19 @@
 //
 // Edges: the colliding pairs, and the pairs of regions adjacent along a grid
 // edge of the label image that never collided (a Voronoi edge shorter than a
-// cell can be a gap between frozen fronts, filled afterwards). Triangles: the
-// Voronoi vertices, read off the label image. A grid cell whose 4 corners carry 3 distinct labels
-// holds the triple point of those 3 regions; the labels met going counter-clockwise round the cell
-// give the triangle's vertex order, so an inverted dual triangle shows up as a clockwise seed
-// triple (see check_dual.h). A cell with 4 distinct labels a, b, c, d (counter-clockwise) holds a
-// near-degenerate vertex, split along the diagonal whose seeds collided, or, if both or neither
-// did, by the in-circle test in the local metric: with M = L L^T at the cell centre and points
-// mapped by x -> L^T x, the diagonal b-d is taken if d lies inside the circle through a, b, c, else
-// a-c. A triple becomes a triangle only if its three seeds are pairwise joined.
+// cell can be a gap between frozen fronts, filled afterwards).
+//
+// Triangles: the Voronoi vertices, read off the label image. A grid cell whose
+// 4 corners carry 3 distinct labels holds the triple point of those 3
+// regions; the labels met going counter-clockwise round the cell give the
+// triangle's vertex order, so an inverted dual triangle shows up as a
+// clockwise seed triple (see check_dual.h). A cell with 4 distinct labels
+// a, b, c, d (counter-clockwise) holds a near-degenerate vertex, split along
+// the diagonal whose seeds collided, or, if both or neither did, by the
+// in-circle test in the local metric: with M = L L^T at the cell centre and
+// points mapped by x -> L^T x, the diagonal b-d is taken if d lies inside the
+// circle through a, b, c, else a-c. A triple becomes a triangle only if its
+// three seeds are pairwise joined.
 #include <Eigen/Core>
 #include <array>
 #include <vector>

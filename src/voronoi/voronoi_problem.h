@@ -14,11 +14,16 @@ namespace homesh {
 /// How a crystal meets the domain boundary (Section 2.6).
 enum class Contact {
   /// The boundary is a stationary crystal and collides like any other
-  /// (Eqs 2.9-2.12): the front freezes where it touches it. Can create
-  /// isolated regions (Fig 2.3a).
+  /// (Eqs 2.9-2.12): the front freezes where it touches it. The thesis finds
+  /// it creates isolated regions (Fig 2.3a).
   wet,
-  /// Eq 2.13: where a crystal has reached the boundary its speed loses the
-  /// component along the boundary normal, so it slides along the boundary.
+  /// Eq 2.13: in the boundary crystal's first cell (0 < domain <= ds) a
+  /// crystal's speed loses the component along the boundary normal,
+  /// F~ = max(0, F(N_s) - (N_b . N_s) F(N_b)), so it slides along the
+  /// boundary (F as in metric_field.h). N_b is the outward normal of the
+  /// domain: the thesis' grad phi_b / |grad phi_b| points into the domain
+  /// when phi_b <= 0 is the boundary crystal, and would speed a crystal up
+  /// into the boundary; with the outward normal F~ = 0 head-on.
   dry,
 };
 
@@ -33,7 +38,8 @@ struct VoronoiProblem {
   /// |grad| ~ 1) of the domain at the grid nodes, < 0 inside, > 0 outside.
   /// Empty: the domain is the whole grid. The boundary crystal of Section 2.6
   /// is {domain >= 0}, i.e. phi_b = -domain, and N_b = grad(domain) / |grad|
-  /// is the outward normal of the domain.
+  /// is the outward normal of the domain. Walls thinner than 3 cells may let
+  /// crystals through.
   Eigen::VectorXd domain;
   Contact contact = Contact::dry;
 };
@@ -67,8 +73,8 @@ struct CrystalPartition {
   std::vector<std::array<int, 2>> collisions;
   /// Crystals that reached the domain boundary, sorted.
   std::vector<int> boundary_contacts;
-  /// Domain nodes inside no crystal at the end (labelled with the crystal of
-  /// smallest level-set value: gaps left between frozen fronts).
+  /// Domain nodes inside no crystal at the end: gaps left between frozen
+  /// fronts (labelled from their neighbours once settled) or not reached.
   int uncovered = 0;
   int steps = 0;
   double time = 0.0;     ///< final time (metric length grown)
