@@ -43,19 +43,12 @@ double incircle(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen:
 DualTriangulation dual_triangulation(const CartesianGrid& g, const Eigen::VectorXi& labels,
                                      const Eigen::Matrix2Xd& seeds,
                                      const std::vector<std::array<int, 2>>& collisions,
+                                     const std::vector<std::array<int, 2>>& adjacent,
                                      const MetricField& metric) {
   DualTriangulation out;
   std::set<Pair> edges(collisions.begin(), collisions.end());
-  for (int j = 0; j < g.ny; ++j) {
-    for (int i = 0; i < g.nx; ++i) {
-      const int a = labels(g.index(i, j));
-      for (const int n :
-           {i + 1 < g.nx ? g.index(i + 1, j) : -1, j + 1 < g.ny ? g.index(i, j + 1) : -1}) {
-        if (n < 0 || a < 0 || labels(n) < 0 || labels(n) == a) continue;
-        if (edges.insert(pair_of(a, labels(n))).second) ++out.adjacency_edges;
-      }
-    }
-  }
+  for (const Pair& e : adjacent)
+    if (edges.insert(e).second) ++out.adjacency_edges;
   std::set<Pair> added, dropped;
   std::map<Triple, Votes> votes;
   for (int j = 0; j + 1 < g.ny; ++j) {

@@ -50,10 +50,13 @@ struct DualTriangulation {
 };
 
 /// labels: grid.node_count() crystal ids (-1: none); seeds: 2 by S;
-/// collisions: colliding pairs {a, b}, a < b; metric: for the in-circle test.
+/// collisions: colliding pairs {a, b}, a < b; adjacent: label pairs {a, b},
+/// a < b, adjacent along a grid edge (RegionReport::adjacent); metric: for the
+/// in-circle test.
 DualTriangulation dual_triangulation(const CartesianGrid& grid, const Eigen::VectorXi& labels,
                                      const Eigen::Matrix2Xd& seeds,
                                      const std::vector<std::array<int, 2>>& collisions,
+                                     const std::vector<std::array<int, 2>>& adjacent,
                                      const MetricField& metric);
 
 }  // namespace homesh

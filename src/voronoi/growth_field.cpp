@@ -52,12 +52,7 @@ GrowthField::GrowthField(const VoronoiProblem& problem)
 }
 
 double GrowthField::speed(int node, const Eigen::Vector2d& N) const {
-  if (uniform_) return metric_speed(metric_.inverse(0), N);
-  const ShepardStencil& s = stencil_[node];
-  double F = 0.0;
-  for (int k = 0; k < 4; ++k)
-    if (s.w[k] != 0.0) F += s.w[k] * metric_speed(metric_.inverse(s.node[k]), N);
-  return F;
+  return uniform_ ? metric_speed(metric_.inverse(0), N) : metric_.stencil_speed(stencil_[node], N);
 }
 
 }  // namespace homesh

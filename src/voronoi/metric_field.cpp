@@ -79,10 +79,10 @@ ShepardStencil MetricField::stencil(const Eigen::Vector2d& p) const {
   return s;
 }
 
-double MetricField::speed(const Eigen::Vector2d& p, const Eigen::Vector2d& N) const {
-  const ShepardStencil s = stencil(p);
+double MetricField::stencil_speed(const ShepardStencil& s, const Eigen::Vector2d& N) const {
   double F = 0.0;
-  for (int k = 0; k < 4; ++k) F += s.w[k] * metric_speed(Minv_[s.node[k]], N);
+  for (int k = 0; k < 4; ++k)
+    if (s.w[k] != 0.0) F += s.w[k] * metric_speed(Minv_[s.node[k]], N);
   return F;
 }
 

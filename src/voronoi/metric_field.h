@@ -63,7 +63,11 @@ class MetricField {
 
   ShepardStencil stencil(const Eigen::Vector2d& p) const;
   /// Shepard average of the speeds sqrt(N^T M_k^-1 N) at the 4 corners.
-  double speed(const Eigen::Vector2d& p, const Eigen::Vector2d& N) const;
+  double speed(const Eigen::Vector2d& p, const Eigen::Vector2d& N) const {
+    return stencil_speed(stencil(p), N);
+  }
+  /// The same with the point's stencil given.
+  double stencil_speed(const ShepardStencil& s, const Eigen::Vector2d& N) const;
   /// Shepard average of the corner metrics (used where a single tensor is
   /// needed: the seed crystal's shape and the in-circle test of the dual).
   Eigen::Matrix2d metric_at(const Eigen::Vector2d& p) const;

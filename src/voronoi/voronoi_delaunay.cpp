@@ -10,7 +10,7 @@ VoronoiDelaunay voronoi_delaunay(const VoronoiProblem& problem, const std::strin
   out.partition = grow_crystals(problem, engine, options);
   out.regions = analyse_regions(problem.grid, out.partition.labels, problem.seeds, problem.domain);
   out.dual = dual_triangulation(problem.grid, out.partition.labels, problem.seeds,
-                                out.partition.collisions, problem.metric);
+                                out.partition.collisions, out.regions.adjacent, problem.metric);
   out.check = check_dual(problem.seeds, out.dual, out.regions);
   return out;
 }

@@ -25,8 +25,8 @@ struct VoronoiDelaunay {
 };
 
 /// Runs the engine called `engine` (voronoi_engines.h) on `problem`, then
-/// analyse_regions, dual_triangulation (in-circle tests in problem.metric) and
-/// check_dual.
+/// analyse_regions, dual_triangulation (collisions and region adjacencies,
+/// in-circle tests in problem.metric) and check_dual.
 VoronoiDelaunay voronoi_delaunay(const VoronoiProblem& problem,
                                  const std::string& engine = "level_set",
                                  const VoronoiOptions& options = {});

@@ -41,11 +41,12 @@ TEST_CASE("the dual of exact Voronoi labels is CGAL's Delaunay triangulation", "
     ++sets;
     INFO("seed set " << seed);
     const Eigen::VectorXi labels = nearest_seed_labels(g, seeds);
-    const DualTriangulation dual = dual_triangulation(g, labels, seeds, {}, kEuclid);
+    const RegionReport regions = analyse_regions(g, labels, seeds, {});
+    const DualTriangulation dual =
+        dual_triangulation(g, labels, seeds, {}, regions.adjacent, kEuclid);
     CHECK(test::rotated(dual.triangles) == expected.triangles);
     CHECK(dual.unjoined_triples == 0);
     CHECK(dual.orientation_conflicts == 0);
-    const RegionReport regions = analyse_regions(g, labels, seeds, {});
     const DualCheck check = check_dual(seeds, dual, regions);
     CHECK(check.ok());
     CHECK(check.euler == 1);
@@ -72,26 +73,26 @@ TEST_CASE(
     }
   const std::vector<std::array<int, 2>> ring{{0, 1}, {1, 2}, {2, 3}, {0, 3}};
 
-  const DualTriangulation iso = dual_triangulation(g, labels, seeds, ring, kEuclid);
+  const DualTriangulation iso = dual_triangulation(g, labels, seeds, ring, {}, kEuclid);
   CHECK(iso.quad_cells == 1);
   CHECK(test::rotated(iso.triangles) == std::set<std::array<int, 3>>{{0, 1, 3}, {1, 2, 3}});
   CHECK(iso.added_edges == std::vector<std::array<int, 2>>{{1, 3}});
 
   // Lengths along y tripled: the diagonal 0-2 is now the shorter.
   const MetricField stretched = MetricField::constant(metric_from_axes(0.0, 1.0, 1.0 / 3));
-  const DualTriangulation aniso = dual_triangulation(g, labels, seeds, ring, stretched);
+  const DualTriangulation aniso = dual_triangulation(g, labels, seeds, ring, {}, stretched);
   CHECK(test::rotated(aniso.triangles) == std::set<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}});
 
   // A collided diagonal wins over the in-circle test; of two collided ones
   // the in-circle test keeps one and drops the other.
   std::vector<std::array<int, 2>> with_02 = ring;
   with_02.push_back({0, 2});
-  const DualTriangulation forced = dual_triangulation(g, labels, seeds, with_02, kEuclid);
+  const DualTriangulation forced = dual_triangulation(g, labels, seeds, with_02, {}, kEuclid);
   CHECK(test::rotated(forced.triangles) == std::set<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}});
   CHECK(forced.added_edges.empty());
   std::vector<std::array<int, 2>> both = with_02;
   both.push_back({1, 3});
-  const DualTriangulation dropped = dual_triangulation(g, labels, seeds, both, kEuclid);
+  const DualTriangulation dropped = dual_triangulation(g, labels, seeds, both, {}, kEuclid);
   CHECK(dropped.dropped_edges == std::vector<std::array<int, 2>>{{0, 2}});
   CHECK(dropped.edges.size() == 5);
 
@@ -108,7 +109,7 @@ TEST_CASE("check_dual finds missing and inverted triangles", "[voronoi][dual]") 
       0.5, 0.25, 0.2, 0.8, 0.75;
   const Eigen::VectorXi labels = nearest_seed_labels(g, seeds);
   const RegionReport regions = analyse_regions(g, labels, seeds, {});
-  DualTriangulation dual = dual_triangulation(g, labels, seeds, {}, kEuclid);
+  DualTriangulation dual = dual_triangulation(g, labels, seeds, {}, regions.adjacent, kEuclid);
   REQUIRE(dual.triangles.size() == 4);
   REQUIRE(check_dual(seeds, dual, regions).ok());
 
