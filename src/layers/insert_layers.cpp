@@ -1,0 +1,213 @@
+#include "layers/insert_layers.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+
+#include "core/error.h"
+#include "core/raise_order.h"
+#include "layers/front_split.h"
+#include "layers/plane_geometry.h"
+#include "layers/radius_ratio.h"
+#include "quality/mesh_validity.h"
+
+namespace homesh {
+namespace {
+
+using layers_detail::number_text;
+using layers_detail::orient;
+using layers_detail::point_text;
+
+// New triangles with their surface and layer.
+struct Triangles {
+  std::vector<std::array<int, 3>> nodes;
+  std::vector<int> entity, layer;
+
+  void add(const std::array<int, 3>& t, int surface, int k) {
+    nodes.push_back(t);
+    entity.push_back(surface);
+    layer.push_back(k);
+  }
+};
+
+double worst_ratio(const Eigen::Matrix2Xd& x, const std::array<int, 3>& a,
+                   const std::array<int, 3>& b) {
+  auto q = [&](const std::array<int, 3>& t) {
+    Eigen::Matrix<double, 2, 3> X;
+    for (int i = 0; i < 3; ++i) X.col(i) = x.col(t[i]);
+    return orient(X.col(0), X.col(1), X.col(2)) > 0 ? radius_ratio(X) : -1.0;
+  };
+  return std::min(q(a), q(b));
+}
+
+// Quad p0 p1 p2 p3 (counter-clockwise) as two triangles: the diagonal with the
+// better worst radius ratio, a valid one if there is one.
+void add_quad(const Eigen::Matrix2Xd& x, int p0, int p1, int p2, int p3, int surface, int k,
+              Triangles& out) {
+  const std::array<int, 3> a0{p0, p1, p2}, a1{p0, p2, p3}, b0{p0, p1, p3}, b1{p1, p2, p3};
+  if (worst_ratio(x, a0, a1) >= worst_ratio(x, b0, b1)) {
+    out.add(a0, surface, k);
+    out.add(a1, surface, k);
+  } else {
+    out.add(b0, surface, k);
+    out.add(b1, surface, k);
+  }
+}
+
+}  // namespace
+
+std::vector<double> layer_depths(double first, double ratio, int n) {
+  if (n < 1 || n > 1000) throw Error("layers: the number of layers n must be in [1, 1000]");
+  if (!(first > 0)) throw Error("layers: the first layer's thickness must be > 0");
+  if (!(ratio > 0)) throw Error("layers: the growth ratio must be > 0");
+  std::vector<double> d(n + 1, 0.0);
+  double h = first;
+  for (int k = 1; k <= n; ++k, h *= ratio) d[k] = d[k - 1] + h;
+  return d;
+}
+
+LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
+  const int n = opt.layers;
+  const std::vector<double> d = layer_depths(opt.first, opt.ratio, n);
+  LayerResult r;
+  r.thickness = d[n];
+  r.from_corners = input.order > 1;
+  const Mesh m = r.from_corners ? raise_order(input, 1) : input;
+  const int invalid = mesh_validity(m).invalid;
+  if (invalid > 0)
+    throw Error("layers: the input mesh has " + std::to_string(invalid) +
+                " triangles not certified valid");
+
+  const std::vector<WallLoop> loops = wall_loops(m, wall_curves(m, opt.walls));
+  std::vector<std::vector<WallNormal>> normals;
+  for (const WallLoop& loop : loops) {
+    normals.push_back(wall_normals(m, loop, opt.normals));
+    r.wall_edges += static_cast<int>(loop.nodes.size());
+    for (std::size_t i = 0; i < loop.nodes.size(); ++i) {
+      const WallNormal& w = normals.back()[i];
+      r.fan_nodes += w.directions.size() > 1 ? 1 : 0;
+      if (w.angle > r.sharpest_angle) {
+        r.sharpest_angle = w.angle;
+        r.sharpest_node = loop.nodes[i];
+      }
+    }
+  }
+  r.loops = static_cast<int>(loops.size());
+  const FrontSplit split = split_front(m, loops, normals);
+  r.gap_triangles = split.gap_triangles;
+
+  // Open the room: each front node to depth d_n on its normal.
+  std::vector<int> moving, curve;
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (std::size_t i = 0; i < loops[l].nodes.size(); ++i)
+      for (std::size_t j = 0; j < split.front[l][i].size(); ++j) {
+        const WallNormal& w = normals[l][i];
+        moving.push_back(split.front[l][i][j]);
+        curve.push_back(loops[l].curves[i]);
+        r.lines.push_back({loops[l].nodes[i], w.directions[j], w.scale, {}});
+      }
+  Eigen::Matrix2Xd target(2, moving.size());
+  for (std::size_t k = 0; k < moving.size(); ++k) {
+    const LayerLine& line = r.lines[k];
+    target.col(k) = m.x.col(line.wall_node) + d[n] * line.scale * line.direction;
+  }
+  std::vector<bool> fixed(split.mesh.num_nodes());
+  for (int i = 0; i < split.mesh.num_nodes(); ++i) fixed[i] = split.mesh.node_class[i].dim < 2;
+  const RoomResult room = open_room(split.mesh, moving, target, fixed, opt.room);
+  r.push_steps = room.steps;
+  r.solves = room.solves;
+  if (!room.complete) {
+    const int b = std::max(room.bottleneck, 0);
+    throw Error("layers: cannot open a room " + number_text(d[n]) + " thick for " +
+                std::to_string(n) + " layers: the elastic push (E = 1, nu = " +
+                number_text(opt.room.poisson) + ") keeps every element valid only up to " +
+                number_text(100 * room.reached) + " % of it, tightest at the wall node " +
+                point_text(m.x.col(r.lines[b].wall_node)) + " on curve " +
+                std::to_string(curve[b]) + "; use fewer or thinner layers (n, first, ratio)");
+  }
+
+  // Layer nodes between each wall node and its front node.
+  Mesh& out = r.mesh;
+  out = split.mesh;
+  const int base = out.num_nodes();
+  const int count = static_cast<int>(r.lines.size());
+  out.x.resize(2, base + count * (n - 1));
+  out.x.leftCols(base) = room.x;
+  for (int k = 0; k < count; ++k) {
+    LayerLine& line = r.lines[k];
+    const NodeClass surface = out.node_class[moving[k]];
+    line.nodes.push_back(line.wall_node);
+    for (int i = 1; i < n; ++i) {
+      const int node = base + k * (n - 1) + (i - 1);
+      out.x.col(node) = m.x.col(line.wall_node) + d[i] * line.scale * line.direction;
+      out.node_class.push_back(surface);
+      line.nodes.push_back(node);
+    }
+    line.nodes.push_back(moving[k]);
+  }
+
+  // Quads on the wall edges, fans at the sharp nodes.
+  Triangles added;
+  int first_line = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const int size = static_cast<int>(loops[l].nodes.size());
+    std::vector<int> start(size + 1);  // lines of node i: start[i] .. start[i + 1] - 1
+    for (int i = 0; i < size; ++i)
+      start[i + 1] = start[i] + static_cast<int>(split.front[l][i].size());
+    for (int i = 0; i < size; ++i) {
+      const int surface = m.tri_entity[loops[l].triangles[i]];
+      const LayerLine& a = r.lines[first_line + start[i]];
+      const LayerLine& b = r.lines[first_line + start[(i + 1) % size + 1] - 1];
+      for (int k = 1; k <= n; ++k)
+        add_quad(out.x, a.nodes[k - 1], b.nodes[k - 1], b.nodes[k], a.nodes[k], surface, k, added);
+      for (int j = start[i]; j + 1 < start[i + 1]; ++j) {
+        const LayerLine& p = r.lines[first_line + j];
+        const LayerLine& q = r.lines[first_line + j + 1];
+        added.add({p.nodes[0], p.nodes[1], q.nodes[1]}, surface, 1);
+        for (int k = 2; k <= n; ++k)
+          add_quad(out.x, p.nodes[k - 1], p.nodes[k], q.nodes[k], q.nodes[k - 1], surface, k, added);
+      }
+    }
+    first_line += start[size];
+  }
+  const int t0 = out.num_triangles();
+  const int t1 = t0 + static_cast<int>(added.nodes.size());
+  out.tri.conservativeResize(3, t1);
+  for (int e = t0; e < t1; ++e)
+    for (int i = 0; i < 3; ++i) out.tri(i, e) = added.nodes[e - t0][i];
+  out.tri_entity.insert(out.tri_entity.end(), added.entity.begin(), added.entity.end());
+  r.layer.assign(t0, 0);
+  r.layer.insert(r.layer.end(), added.layer.begin(), added.layer.end());
+
+  const MeshValidity v = mesh_validity(out);
+  if (v.invalid > 0) {
+    int e = 0;
+    while (v.min_det(e) > 0 && e + 1 < t1) ++e;
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (int i = 0; i < 3; ++i) c += out.x.col(out.tri(i, e)) / 3;
+    throw Error("layers: " + std::to_string(v.invalid) + " layer triangles would fold, e.g. in " +
+                "layer " + std::to_string(r.layer[e]) + " near " + point_text(c) +
+                " (neighbouring normals cross within the thickness " + number_text(d[n]) +
+                "); use fewer or thinner layers (n, first, ratio)");
+  }
+  return r;
+}
+
+std::vector<int> corner_triangles(const LayerResult& r, int wall_node) {
+  std::set<int> nodes;
+  for (const LayerLine& line : r.lines)
+    if (line.wall_node == wall_node) nodes.insert(line.nodes.begin(), line.nodes.end());
+  std::vector<int> tris;
+  for (int e = 0; e < r.mesh.num_triangles(); ++e) {
+    if (r.layer[e] == 0) continue;
+    for (int i = 0; i < 3; ++i)
+      if (nodes.count(r.mesh.tri(i, e))) {
+        tris.push_back(e);
+        break;
+      }
+  }
+  return tris;
+}
+
+}  // namespace homesh

@@ -1,0 +1,87 @@
+#pragma once
+// Insertion of boundary layers into an existing triangle mesh (thesis
+// Section 4.3): the walls' front is detached (front_split.h) and pushed into the
+// domain by the elastic analogy (open_room.h) by the total thickness, then the
+// room between wall and front is filled layer by layer from the wall outward,
+// along single or multiple normals (wall_normals.h).
+//
+// Layer depths grow geometrically: layer k (k = 1 at the wall) is
+// first * ratio^(k-1) thick, so the interfaces lie at depths
+// d_k = first (ratio^k - 1) / (ratio - 1) (first * k if ratio = 1) and the total
+// thickness is d_n. On a normal line of direction n and scale s the layer nodes
+// sit at x_wall + d_k s n.
+//
+// Elements: each wall edge gets n quads between the normal lines of its ends
+// (the outgoing-side normal of its first node, the incoming-side normal of its
+// second), two triangles each, the diagonal chosen for the better worst
+// radius ratio (Eq 4.17) among valid choices (the swap of Fig 4.5c). Between
+// consecutive normals of a fan: a triangle at the wall node, then n - 1 quads.
+// Triangle count: T + 2 n E + 2 n (m - 1) per fan of m normals (the m - 1 gap
+// triangles of the split included), E the number of wall edges; node count:
+// V + n L, L the number of normal lines.
+//
+// The walls keep their nodes, classification (curve and parameter), lines,
+// points and physical groups; new nodes lie on the surface of the wall's
+// triangles, whose tag the layer triangles take. Meshes of order p > 1 are
+// reduced to their corners first (the result is linear; curve it afterwards).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "layers/open_room.h"
+#include "layers/wall_normals.h"
+
+namespace homesh {
+
+struct LayerOptions {
+  std::vector<std::string> walls;  ///< curve physical group names or curve tags
+  int layers = 3;                  ///< n >= 1
+  double first = 1e-3;             ///< thickness of the layer at the wall, > 0
+  double ratio = 1.2;              ///< growth of thickness from layer to layer, > 0
+  NormalOptions normals;
+  RoomOptions room;
+};
+
+/// One normal line of nodes from a wall node into the domain.
+struct LayerLine {
+  int wall_node = -1;
+  Eigen::Vector2d direction = Eigen::Vector2d::Zero();  ///< unit
+  double scale = 1;                                      ///< node k at depth d_k * scale
+  std::vector<int> nodes;  ///< n + 1 nodes: the wall node, the layer nodes, the front node
+};
+
+struct LayerResult {
+  Mesh mesh;
+  /// #triangles: 0 for the existing mesh (triangle e < T is input triangle e;
+  /// the fans' gap triangles follow), k = 1..n for layer k from the wall.
+  std::vector<int> layer;
+  std::vector<LayerLine> lines;
+  int loops = 0;
+  int wall_edges = 0;
+  int fan_nodes = 0;
+  int gap_triangles = 0;
+  double thickness = 0;    ///< d_n
+  int push_steps = 0;      ///< accepted elastic steps opening the room
+  int solves = 0;          ///< elasticity solves
+  bool from_corners = false;  ///< the input was of order > 1
+  int sharpest_node = -1;     ///< wall node with the largest domain angle
+  double sharpest_angle = 0;  ///< its domain angle, radians
+};
+
+/// d_0 = 0, d_1, ..., d_n as above. Throws homesh::Error unless n >= 1,
+/// first > 0 and ratio > 0.
+std::vector<double> layer_depths(double first, double ratio, int n);
+
+/// m with boundary layers on the walls of opt; every triangle certified valid.
+/// Throws homesh::Error with a message naming the cause and the place if the
+/// input is not valid, the walls are unusable (wall_loops.h), the room cannot
+/// be opened with every element valid, or the layers themselves would fold.
+LayerResult insert_layers(const Mesh& m, const LayerOptions& opt);
+
+/// The layer triangles (layer > 0) having a node on a normal line of
+/// `wall_node`: the elements of that corner, where single and multiple normals
+/// differ.
+std::vector<int> corner_triangles(const LayerResult& r, int wall_node);
+
+}  // namespace homesh

@@ -1,0 +1,54 @@
+#pragma once
+// Opening the room for the boundary layers (thesis Section 4.3, Eq 4.16): the
+// front nodes are pushed from the walls into the domain by the elastic analogy
+// with E = 1, nu = 0.4 and no added terms, the displacement
+// delta_p = x_Omega - x_Gamma prescribed on them (Eq 4.16), every other
+// boundary node fixed.
+//
+// The push goes in steps capped per node as in Fig 4.5a: a node moving along d
+// meets the line of the opposite edge of one of its triangles after
+// delta_i = available_push(...), and a step moves it by at most
+// cap * min(delta_1, delta_2, ...), cap < 1 (the thesis' bound is cap = 1, where
+// the element degenerates if its other nodes stood still). All front nodes
+// advance by the same fraction of their remaining motion, the tightest node
+// setting it, so the front keeps its shape. After each elasticity solve on the
+// current mesh the result must be certified valid, else the step is halved.
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/mesh.h"
+#include "fem/linear_solver.h"
+
+namespace homesh {
+
+struct RoomOptions {
+  double poisson = 0.4;  ///< nu of the analogy (E = 1)
+  double cap = 0.5;      ///< fraction of min(delta_i) a node may move per step, in (0, 1]
+  int max_steps = 200;   ///< accepted steps before giving up
+  int max_halvings = 8;  ///< halvings of a failing step before giving up
+  LinearSolverOptions solver;
+};
+
+struct RoomResult {
+  Eigen::Matrix2Xd x;     ///< 2 by #nodes positions of the last certified-valid state
+  bool complete = false;  ///< every moving node reached its target
+  double reached = 0;     ///< fraction of the motion done, in [0, 1]
+  int steps = 0;          ///< accepted steps
+  int solves = 0;         ///< elasticity solves, rejected ones included
+  int bottleneck = -1;    ///< index into `moving` of the node that set the last step
+};
+
+/// delta: how far `node` of m can move along the unit direction d before it
+/// reaches the line through the opposite edge of one of `triangles` (those
+/// around it); +infinity if it moves away from all of them.
+double available_push(const Mesh& m, const std::vector<int>& triangles, int node,
+                      const Eigen::Vector2d& d);
+
+/// Moves nodes moving[k] of the valid linear mesh m to target.col(k) (2 by
+/// #moving) as above; nodes with fixed[i] stay, the rest follow the analogy.
+/// Stops short (complete = false) after max_steps steps or a step halved
+/// max_halvings times. Throws homesh::Error on bad sizes or options.
+RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen::Matrix2Xd& target,
+                     const std::vector<bool>& fixed, const RoomOptions& opt = {});
+
+}  // namespace homesh

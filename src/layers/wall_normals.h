@@ -1,0 +1,52 @@
+#pragma once
+// Normal vectors of a boundary layer at the wall nodes (thesis Sections 4.3.1,
+// 4.3.2, Figs 4.5-4.7).
+//
+// At a wall node x with neighbours prev (edge prev -> x) and next (edge
+// x -> next), the domain on the left, the domain angle theta in (0, 2 pi) turns
+// the outgoing edge direction next - x counter-clockwise onto prev - x (90 deg
+// at a convex corner of the domain, 270 deg at a re-entrant one, about 330 deg
+// at a sharp trailing edge).
+//  - Single normal: along the bisector, at theta / 2 from the outgoing edge.
+//    A layer of depth d puts its node at x + d s n with the miter
+//    s = min(1 / sin(theta / 2), max_scale), so the layer keeps the depth d from
+//    both edges up to right-angle corners (s = sqrt 2) and thins at sharper ones.
+//  - Multiple normals (a fan, Fig 4.7) where theta >= fan_angle: `fan` (odd)
+//    normals at equal angles from the normal of the outgoing edge
+//    (theta_1 = 90 deg) to that of the incoming edge (theta_m = theta - 90 deg),
+//    the middle one on the bisector; equidistant displacement (s = 1).
+#include <Eigen/Core>
+#include <cmath>
+#include <vector>
+
+#include "core/mesh.h"
+#include "layers/wall_loops.h"
+
+namespace homesh {
+
+struct NormalOptions {
+  bool multi = false;         ///< fans at nodes whose domain angle reaches fan_angle
+  int fan = 5;                ///< normals per fan: odd, >= 3
+  double fan_angle = 330;     ///< degrees, in [180, 360)
+  double max_scale = M_SQRT2; ///< cap of the single-normal miter 1 / sin(theta / 2)
+};
+
+/// The normals at one wall node.
+struct WallNormal {
+  double angle = M_PI;  ///< domain angle theta, radians in (0, 2 pi]
+  /// 1 (single) or `fan` unit directions, counter-clockwise from the outgoing edge's side.
+  std::vector<Eigen::Vector2d> directions;
+  double scale = 1;     ///< s above: depth d lies at x + d * scale * direction
+};
+
+/// Normals at wall node x between prev and next (domain on the left of
+/// prev -> x -> next). A zero angle (prev and next in one direction) counts as
+/// 2 pi, a slit. Throws homesh::Error on coincident points or bad options.
+WallNormal wall_normal(const Eigen::Vector2d& prev, const Eigen::Vector2d& x,
+                       const Eigen::Vector2d& next, const NormalOptions& opt = {});
+
+/// #loop nodes normals at the nodes of a loop of m.
+std::vector<WallNormal> wall_normals(const Mesh& m, const WallLoop& loop,
+                                     const NormalOptions& opt = {});
+
+}  // namespace homesh

@@ -1,0 +1,219 @@
+#include "layers/insert_layers.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/raise_order.h"
+#include "layers/radius_ratio.h"
+#include "quality/mesh_validity.h"
+#include "../layers/layer_test_meshes.h"
+
+using namespace homesh;
+
+namespace {
+
+Mesh annulus(double outer = 3, int rings = 6) {
+  return test::ring_mesh(test::circle(32, 1), test::circle(32, outer), rings, 1.5);
+}
+
+// An L of 4 x 4 cells (spacing 0.25) without its upper-right 2 x 2 block: a
+// re-entrant corner at (0.5, 0.5) and five right-angle corners, all on the wall.
+Mesh l_shape() {
+  return test::grid_mesh(
+      4, 4, 0.25, [](int i, int j) { return i < 2 || j < 2; },
+      [](const Eigen::Vector2d&) { return true; });
+}
+
+// A 8 x 8 box (spacing 0.25) with a 4 x 4 square hole: walls "wall" (hole) and "outer".
+Mesh box_with_hole() {
+  return test::grid_mesh(
+      8, 8, 0.25, [](int i, int j) { return !(i >= 2 && i < 6 && j >= 2 && j < 6); },
+      [](const Eigen::Vector2d& p) { return p(0) > 0.4 && p(0) < 1.6 && p(1) > 0.4 && p(1) < 1.6; });
+}
+
+// A rhombus with 17 deg tips (domain angle 343 deg) in a circle of radius 3.
+Mesh rhombus_hole() {
+  const Eigen::Matrix2Xd inner = test::rhombus(10, 0.15);
+  Eigen::Matrix2Xd outer(2, inner.cols());
+  for (int i = 0; i < inner.cols(); ++i) {
+    const double a = 2 * M_PI * i / inner.cols();
+    outer.col(i) = 3 * Eigen::Vector2d(std::cos(a), std::sin(a));
+  }
+  return test::ring_mesh(inner, outer, 10);
+}
+
+LayerOptions options(std::vector<std::string> walls, int n, double first, double ratio) {
+  LayerOptions o;
+  o.walls = std::move(walls);
+  o.layers = n;
+  o.first = first;
+  o.ratio = ratio;
+  return o;
+}
+
+double worst_q(const Mesh& m, const std::vector<int>& tris) {
+  const Eigen::VectorXd q = radius_ratios(m);
+  double w = 1;
+  for (int e : tris) w = std::min(w, q(e));
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("layer depths grow geometrically and sum to first (r^n - 1) / (r - 1)", "[layers]") {
+  const auto d = layer_depths(1e-3, 1.2, 15);
+  REQUIRE(d.size() == 16);
+  CHECK(d[0] == 0);
+  CHECK(d[15] == Approx(1e-3 * (std::pow(1.2, 15) - 1) / 0.2).epsilon(1e-13));
+  for (int k = 2; k <= 15; ++k) CHECK((d[k] - d[k - 1]) / (d[k - 1] - d[k - 2]) == Approx(1.2));
+  CHECK(layer_depths(0.1, 1, 3).back() == Approx(0.3));
+  CHECK_THROWS_WITH(layer_depths(0, 1.2, 3), Catch::Contains("thickness must be > 0"));
+  CHECK_THROWS_WITH(layer_depths(1e-3, 1.2, 0), Catch::Contains("n must be in"));
+}
+
+TEST_CASE("layers around a circular hole: counts, depths, walls kept, valid", "[layers]") {
+  const Mesh m = annulus();
+  const int n = 3;
+  const LayerResult r = insert_layers(m, options({"wall"}, n, 0.02, 1.5));
+  const Mesh& b = r.mesh;
+  const int e = 32;
+  CHECK(r.loops == 1);
+  CHECK(r.wall_edges == e);
+  CHECK(r.fan_nodes == 0);
+  CHECK(b.num_triangles() == m.num_triangles() + 2 * n * e);
+  CHECK(b.num_nodes() == m.num_nodes() + n * e);
+  CHECK(r.thickness == Approx(0.02 * (1 + 1.5 + 2.25)));
+  CHECK(mesh_validity(b).invalid == 0);
+  CHECK(r.push_steps >= 1);
+
+  // Each normal line: the wall node, then the interfaces at d_k * scale, radially.
+  const auto d = layer_depths(0.02, 1.5, n);
+  REQUIRE(static_cast<int>(r.lines.size()) == e);
+  for (const LayerLine& line : r.lines) {
+    REQUIRE(static_cast<int>(line.nodes.size()) == n + 1);
+    CHECK(line.nodes[0] == line.wall_node);
+    const Eigen::Vector2d w = b.x.col(line.wall_node);
+    CHECK((line.direction - w.normalized()).norm() < 1e-14);
+    for (int k = 1; k <= n; ++k)
+      CHECK((b.x.col(line.nodes[k]) - w).norm() == Approx(d[k] / std::cos(M_PI / 32)).epsilon(1e-12));
+  }
+  // Layer k holds 2 E triangles; the input triangles keep their numbers.
+  for (int k = 0; k <= n; ++k)
+    CHECK(std::count(r.layer.begin(), r.layer.end(), k) == (k == 0 ? m.num_triangles() : 2 * e));
+  for (int t = 0; t < m.num_triangles(); ++t) CHECK(r.layer[t] == 0);
+
+  // The walls keep nodes, positions, classification and lines; new nodes are interior.
+  CHECK(b.line == m.line);
+  CHECK(b.line_entity == m.line_entity);
+  CHECK(b.physicals.size() == m.physicals.size());
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_class[i].dim < 2) {
+      CHECK(b.node_class[i].dim == m.node_class[i].dim);
+      CHECK(b.node_class[i].u == m.node_class[i].u);
+      CHECK((b.x.col(i) - m.x.col(i)).norm() == 0);
+    }
+  for (int i = m.num_nodes(); i < b.num_nodes(); ++i) CHECK(b.node_class[i].dim == 2);
+  for (int t = 0; t < b.num_triangles(); ++t) CHECK(b.tri_entity[t] == 1);
+}
+
+TEST_CASE("layers on several walls: concave and convex corners of a box with a hole", "[layers]") {
+  const Mesh m = box_with_hole();
+  const int n = 4;
+  const LayerResult r = insert_layers(m, options({"wall", "outer"}, n, 0.005, 1.3));
+  CHECK(r.loops == 2);
+  CHECK(r.wall_edges == 16 + 32);
+  CHECK(r.mesh.num_triangles() == m.num_triangles() + 2 * n * 48);
+  CHECK(mesh_validity(r.mesh).invalid == 0);
+  // The corner nodes go along the diagonals by sqrt 2 d_n, keeping d_n from both sides.
+  for (const LayerLine& line : r.lines) {
+    const Eigen::Vector2d w = r.mesh.x.col(line.wall_node), f = r.mesh.x.col(line.nodes[n]);
+    const bool corner = std::abs(line.direction(0) * line.direction(1)) > 0.1;
+    CHECK((f - w).norm() == Approx((corner ? std::sqrt(2) : 1) * r.thickness));
+    if (corner) CHECK((f - w).cwiseAbs().minCoeff() == Approx(r.thickness));
+  }
+}
+
+TEST_CASE("layers at a re-entrant corner and five right-angle corners", "[layers]") {
+  const Mesh m = l_shape();
+  const int n = 3;
+  const LayerResult r = insert_layers(m, options({"wall"}, n, 0.01, 1.5));
+  CHECK(r.wall_edges == 16);
+  CHECK(r.mesh.num_triangles() == m.num_triangles() + 2 * n * 16);
+  CHECK(r.sharpest_angle == Approx(1.5 * M_PI));
+  CHECK((r.mesh.x.col(r.sharpest_node) - Eigen::Vector2d(0.5, 0.5)).norm() < 1e-15);
+  CHECK(mesh_validity(r.mesh).invalid == 0);
+  // The front of the re-entrant corner stands d_n from both walls, away from the notch.
+  for (const LayerLine& line : r.lines)
+    if (line.wall_node == r.sharpest_node)
+      CHECK((r.mesh.x.col(line.nodes[n]) - Eigen::Vector2d(0.5 - r.thickness, 0.5 - r.thickness))
+                .norm() < 1e-12);
+}
+
+TEST_CASE("fans of normals: counts and validity at the corners of a square hole", "[layers]") {
+  const Mesh m = box_with_hole();
+  LayerOptions o = options({"wall"}, 3, 0.01, 1.2);
+  o.normals.multi = true;
+  o.normals.fan_angle = 270;
+  for (int fan : {3, 5}) {
+    o.normals.fan = fan;
+    const LayerResult r = insert_layers(m, o);
+    CHECK(r.fan_nodes == 4);
+    CHECK(r.gap_triangles == 4 * (fan - 1));
+    CHECK(static_cast<int>(r.lines.size()) == 16 + 4 * (fan - 1));
+    CHECK(r.mesh.num_triangles() == m.num_triangles() + 2 * 3 * 16 + 2 * 3 * (fan - 1) * 4);
+    CHECK(r.mesh.num_nodes() == m.num_nodes() + 3 * static_cast<int>(r.lines.size()));
+    CHECK(mesh_validity(r.mesh).invalid == 0);
+    // Equidistant: every fan node at depth d_k from its corner.
+    for (const LayerLine& line : r.lines)
+      if (line.scale == 1 && std::abs(line.direction(0) * line.direction(1)) > 1e-9)
+        CHECK((r.mesh.x.col(line.nodes[3]) - r.mesh.x.col(line.wall_node)).norm() ==
+              Approx(r.thickness));
+  }
+}
+
+TEST_CASE("multiple normals beat a single normal at a sharp corner (Eq 4.17)", "[layers]") {
+  const Mesh m = rhombus_hole();
+  LayerOptions o = options({"wall"}, 4, 0.004, 1.2);
+  const LayerResult single = insert_layers(m, o);
+  o.normals.multi = true;
+  const LayerResult multi = insert_layers(m, o);
+  REQUIRE(single.sharpest_angle == Approx(2 * M_PI - 2 * std::atan(0.15)));
+  REQUIRE(multi.fan_nodes == 2);  // the two sharp tips
+  CHECK(multi.mesh.num_triangles() == single.mesh.num_triangles() + 2 * 2 * 4 * 4);
+  const double qs = worst_q(single.mesh, corner_triangles(single, single.sharpest_node));
+  const double qm = worst_q(multi.mesh, corner_triangles(multi, multi.sharpest_node));
+  CHECK(corner_triangles(single, single.sharpest_node).size() == 4 * 4);
+  // Both wall-edge strips, plus the fan's (m - 1)(2 n - 1) (its gap triangles are not layers).
+  CHECK(corner_triangles(multi, multi.sharpest_node).size() == 4 * 4 + 4 * 7);
+  CHECK(qs < 0.01);  // the single normal's skewed quads at the tip
+  CHECK(qm > 0.07);  // the fan's worst: a wall-edge strip of aspect 0.1 / 0.004
+  CHECK(qm > 10 * qs);
+  CHECK(mesh_validity(multi.mesh).invalid == 0);
+}
+
+TEST_CASE("layers refuse an impossible thickness with a clear message", "[layers]") {
+  const Mesh m = annulus(1.5, 3);
+  CHECK_THROWS_WITH(insert_layers(m, options({"wall"}, 6, 0.1, 1)),
+                    Catch::Contains("cannot open a room 0.6 thick for 6 layers") &&
+                        Catch::Contains("use fewer or thinner layers"));
+  CHECK_THROWS_WITH(insert_layers(m, options({"hull"}, 3, 0.01, 1.2)),
+                    Catch::Contains("no wall 'hull'"));
+  LayerOptions o = options({"wall"}, 3, 0.01, 1.2);
+  o.normals.multi = true;
+  o.normals.fan = 2;
+  CHECK_THROWS_WITH(insert_layers(m, o), Catch::Contains("odd"));
+}
+
+TEST_CASE("a quadratic mesh is layered on its corners", "[layers]") {
+  const Mesh m = annulus();
+  const LayerOptions o = options({"wall"}, 2, 0.02, 1.2);
+  const LayerResult linear = insert_layers(m, o);
+  const LayerResult quadratic = insert_layers(raise_order(m, 2), o);
+  CHECK(!linear.from_corners);
+  CHECK(quadratic.from_corners);
+  CHECK(quadratic.mesh.order == 1);
+  REQUIRE(quadratic.mesh.num_nodes() == linear.mesh.num_nodes());
+  CHECK((quadratic.mesh.x - linear.mesh.x).norm() < 1e-12);
+  CHECK(quadratic.mesh.tri == linear.mesh.tri);
+}

@@ -1,0 +1,65 @@
+#include "layers/open_room.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "layers/front_split.h"
+#include "quality/mesh_validity.h"
+#include "../layers/layer_test_meshes.h"
+
+using namespace homesh;
+
+TEST_CASE("available push: distance along d to the opposite edge's line (Fig 4.5a)", "[layers]") {
+  Mesh m;
+  m.x.resize(2, 3);
+  m.x << 0, 1, 0,  //
+      0, 0, 1;
+  m.tri.resize(3, 1);
+  m.tri << 0, 1, 2;
+  CHECK(available_push(m, {0}, 0, Eigen::Vector2d(1, 1).normalized()) == Approx(std::sqrt(0.5)));
+  CHECK(available_push(m, {0}, 0, Eigen::Vector2d(1, 0)) == Approx(1));
+  CHECK(available_push(m, {0}, 0, Eigen::Vector2d(-1, 0)) == std::numeric_limits<double>::infinity());
+  CHECK(available_push(m, {0}, 1, Eigen::Vector2d(-1, 0)) == Approx(1));
+}
+
+TEST_CASE("open room: the front of a circular hole pushed radially, capped, valid", "[layers]") {
+  // 24 points, hole radius 1, 6 rings to radius 3 with the first ring at 0.0278.
+  const Mesh m = test::ring_mesh(test::circle(24, 1), test::circle(24, 3), 6, 2);
+  const std::vector<WallLoop> loops = wall_loops(m, {1});
+  const std::vector<std::vector<WallNormal>> normals = {wall_normals(m, loops[0])};
+  const FrontSplit s = split_front(m, loops, normals);
+  REQUIRE(s.gap_triangles == 0);
+  REQUIRE(s.mesh.num_nodes() == m.num_nodes() + 24);
+  std::vector<int> moving;
+  std::vector<bool> fixed(s.mesh.num_nodes());
+  for (int i = 0; i < s.mesh.num_nodes(); ++i) fixed[i] = s.mesh.node_class[i].dim < 2;
+  for (const auto& f : s.front[0]) moving.push_back(f[0]);
+
+  for (double push : {0.2, 2.5}) {
+    CAPTURE(push);
+    Eigen::Matrix2Xd target(2, 24);
+    for (int k = 0; k < 24; ++k)
+      target.col(k) = (1 + push) * m.x.col(loops[0].nodes[k]);
+    const RoomResult r = open_room(s.mesh, moving, target, fixed);
+    Mesh pushed = s.mesh;
+    pushed.x = r.x;
+    CHECK(mesh_validity(pushed).invalid == 0);
+    if (push < 1) {
+      // About 7 times the first ring's depth: several capped steps.
+      CHECK(r.complete);
+      CHECK(r.reached == 1);
+      CHECK(r.steps >= 3);
+      for (int k = 0; k < 24; ++k) CHECK((r.x.col(moving[k]) - target.col(k)).norm() == 0);
+      for (int i = 0; i < m.num_nodes(); ++i)
+        if (fixed[i]) CHECK((r.x.col(i) - m.x.col(i)).norm() == 0);
+    } else {
+      // Past the fixed outer circle: stops short, valid, part of the way.
+      CHECK(!r.complete);
+      CHECK(r.reached > 0.3);
+      CHECK(r.reached < 0.8);
+      CHECK(r.bottleneck >= 0);
+    }
+  }
+}
