@@ -1,0 +1,101 @@
+#include "pipeline/stages/layers_stage.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "fem/linear_solver.h"
+#include "layers/insert_layers.h"
+#include "layers/radius_ratio.h"
+
+namespace homesh {
+namespace {
+
+void run(Context& ctx, const Options& opt) {
+  Mesh& m = ctx.require_mesh("layers");
+  LayerOptions o;
+  o.walls = opt.get_list("walls");
+  if (o.walls.empty())
+    throw Error("stage 'layers': give the walls, e.g. walls=aerofoil (curve physical groups or tags)");
+  o.layers = opt.get_int("n", 1, 1000);
+  o.first = opt.get_double("first");
+  o.ratio = opt.get_double("ratio");
+  const std::string normals = opt.get_string("normals");
+  if (normals != "single" && normals != "multi")
+    throw Error("stage 'layers': option normals=" + normals + ": expected single or multi");
+  o.normals.multi = normals == "multi";
+  o.normals.fan = opt.get_int("fan", 3, 99);
+  o.normals.fan_angle = opt.get_double("fan_angle");
+  o.room.poisson = opt.get_double("nu");
+  if (!(o.room.poisson > -1 && o.room.poisson < 0.5))
+    throw Error("stage 'layers': option nu must be in (-1, 0.5)");
+  o.room.solver.method = opt.get_string("solver");
+
+  const int order = m.order, nodes = m.num_nodes(), triangles = m.num_triangles();
+  LayerResult r = insert_layers(m, o);
+  if (r.from_corners)
+    ctx.log.info("layers: the input is of order {}: its corners are layered and the result is "
+                 "linear (curve it with -m curve:p=N)", order);
+  m = std::move(r.mesh);
+  r.mesh = Mesh();
+
+  const Eigen::VectorXd q = radius_ratios(m);
+  Eigen::VectorXd layer(m.num_triangles());
+  for (int e = 0; e < m.num_triangles(); ++e) layer(e) = r.layer[e];
+  ctx.fields.clear();
+  ctx.set_field({"radius ratio (Eq 4.17)", Field::Kind::Element, q.transpose()});
+  ctx.set_field({"layer", Field::Kind::Element, layer.transpose()});
+
+  std::string walls;
+  for (const std::string& w : o.walls) walls += (walls.empty() ? "" : ",") + w;
+  ctx.log.info("layers: {} layers on {} ({} loops, {} wall edges, {} fans), thickness {:.6g} "
+               "(first {:g}, ratio {:g})", o.layers, walls, r.loops,
+               r.wall_edges, r.fan_nodes, r.thickness, o.first, o.ratio);
+  ctx.log.info("layers: room opened in {} elastic steps (E = 1, nu = {:g}); {} -> {} triangles, "
+               "{} -> {} nodes", r.push_steps, o.room.poisson, triangles, m.num_triangles(),
+               nodes, m.num_nodes());
+  double worst = 1, sum = 0;
+  int count = 0;
+  for (int e = 0; e < m.num_triangles(); ++e)
+    if (r.layer[e] > 0) {
+      worst = std::min(worst, q(e));
+      sum += q(e);
+      ++count;
+    }
+  ctx.log.info("layers: radius ratio Q (Eq 4.17) of the {} layer triangles: min {:.4f}, mean {:.4f}",
+               count, worst, sum / std::max(count, 1));
+  const std::vector<int> corner = corner_triangles(r, r.sharpest_node);
+  double corner_worst = 1;
+  for (int e : corner) corner_worst = std::min(corner_worst, q(e));
+  const double degrees = r.sharpest_angle * 180 / M_PI;
+  ctx.log.info("layers: at the sharpest wall node ({:.6g}, {:.6g}), {:.1f} deg ({} normals): "
+               "min Q {:.4f} over its {} layer triangles",
+               m.x(0, r.sharpest_node), m.x(1, r.sharpest_node), degrees,
+               std::count_if(r.lines.begin(), r.lines.end(),
+                             [&](const LayerLine& l) { return l.wall_node == r.sharpest_node; }),
+               corner_worst, corner.size());
+  if (o.normals.multi && r.fan_nodes == 0)
+    ctx.log.warn("layers: no wall node reaches fan_angle = {:g} deg (the sharpest has {:.1f} deg): "
+                 "single normals everywhere", o.normals.fan_angle, degrees);
+}
+
+}  // namespace
+
+Stage layers_stage() {
+  return {"layers",
+          "boundary layers on walls: room opened by the elastic analogy, geometric layers",
+          {{"walls", "", "curve physical groups or tags the layers grow from, comma-separated"},
+           {"n", "3", "number of layers"},
+           {"first", "1e-3", "thickness of the layer at the wall"},
+           {"ratio", "1.2", "thickness ratio of consecutive layers"},
+           {"normals", "single", "single | multi (fans of normals at sharp wall nodes)"},
+           {"fan", "5", "normals per fan (odd, >= 3)"},
+           {"fan_angle", "330", "domain angle (deg) from which a wall node gets a fan"},
+           {"nu", "0.4", "Poisson's ratio of the elastic push (E = 1)"},
+           {"solver", "ldlt", "linear solver: ldlt | cg (| cholmod)"}},
+          run};
+}
+
+}  // namespace homesh
