@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "pipeline/stages/curve_stage.h"
 #include "pipeline/stages/info_stage.h"
+#include "pipeline/stages/layers_stage.h"
 #include "pipeline/stages/mesh_stage.h"
 #include "pipeline/stages/order_stage.h"
 #include "pipeline/stages/quality_stage.h"
@@ -13,7 +14,8 @@
 namespace homesh {
 
 const std::vector<Stage>& stages() {
-  static const std::vector<Stage> table = {mesh_stage(), order_stage(), curve_stage(), rotate_stage(),
+  static const std::vector<Stage> table = {mesh_stage(), order_stage(), layers_stage(),
+                                           curve_stage(), rotate_stage(),
                                            quality_stage(), info_stage()};
   return table;
 }
