@@ -10,13 +10,15 @@
 #include "pipeline/stages/order_stage.h"
 #include "pipeline/stages/quality_stage.h"
 #include "pipeline/stages/rotate_stage.h"
+#include "pipeline/stages/voronoi_stage.h"
 
 namespace homesh {
 
 const std::vector<Stage>& stages() {
   static const std::vector<Stage> table = {mesh_stage(), order_stage(), layers_stage(),
                                            curve_stage(), rotate_stage(),
-                                           quality_stage(), info_stage()};
+                                           quality_stage(), info_stage(),
+                                           voronoi_stage()};
   return table;
 }
 
