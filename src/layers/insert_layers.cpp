@@ -120,20 +120,20 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
   if (!room.complete) {
     const int b = std::max(room.bottleneck, 0);
     throw Error("layers: cannot open a room " + number_text(d[n]) + " thick for " +
-                std::to_string(n) + " layers: the elastic push (E = 1, nu = " +
+                std::to_string(n) + " layers: the elastic push (" + opt.room.formulation + ", nu = " +
                 number_text(opt.room.poisson) + ") keeps every element valid only up to " +
-                number_text(100 * room.reached) + " % of it, tightest at the wall node " +
+                number_text(100 * room.reached) + " % of it (" + std::to_string(room.steps) +
+                " steps), tightest at the wall node " +
                 point_text(m.x.col(r.lines[b].wall_node)) + " on curve " +
                 std::to_string(curve[b]) + "; use fewer or thinner layers (n, first, ratio)");
   }
 
   // Layer nodes between each wall node and its front node.
   Mesh& out = r.mesh;
-  out = split.mesh;
+  out = room.mesh;
   const int base = out.num_nodes();
   const int count = static_cast<int>(r.lines.size());
-  out.x.resize(2, base + count * (n - 1));
-  out.x.leftCols(base) = room.x;
+  out.x.conservativeResize(2, base + count * (n - 1));
   for (int k = 0; k < count; ++k) {
     LayerLine& line = r.lines[k];
     const NodeClass surface = out.node_class[moving[k]];

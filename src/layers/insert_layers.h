@@ -53,8 +53,9 @@ struct LayerLine {
 
 struct LayerResult {
   Mesh mesh;
-  /// #triangles: 0 for the existing mesh (triangle e < T is input triangle e;
-  /// the fans' gap triangles follow), k = 1..n for layer k from the wall.
+  /// #triangles: 0 for the existing mesh (the input's T triangles first, with
+  /// their surfaces, re-joined by the push's edge flips; the fans' gap
+  /// triangles next), k = 1..n for layer k from the wall.
   std::vector<int> layer;
   std::vector<LayerLine> lines;
   int loops = 0;

@@ -5,11 +5,23 @@
 #include <limits>
 
 #include "core/error.h"
+#include "curving/analogy_formulation.h"
 #include "fem/solve_elasticity.h"
+#include "layers/edge_flips.h"
 #include "layers/plane_geometry.h"
 #include "quality/mesh_validity.h"
 
 namespace homesh {
+namespace {
+
+std::vector<std::vector<int>> node_triangles(const Mesh& m) {
+  std::vector<std::vector<int>> around(m.num_nodes());
+  for (int e = 0; e < m.num_triangles(); ++e)
+    for (int i = 0; i < 3; ++i) around[m.tri(i, e)].push_back(e);
+  return around;
+}
+
+}  // namespace
 
 double available_push(const Mesh& m, const std::vector<int>& triangles, int node,
                       const Eigen::Vector2d& d) {
@@ -34,14 +46,13 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
   if (target.cols() != count || fixed.size() != static_cast<std::size_t>(m.num_nodes()))
     throw Error("open_room: one target per moving node and one fixed flag per node are needed");
   if (!(opt.cap > 0 && opt.cap <= 1)) throw Error("open_room: cap must be in (0, 1]");
-  std::vector<std::vector<int>> around(m.num_nodes());
-  for (int e = 0; e < m.num_triangles(); ++e)
-    for (int i = 0; i < 3; ++i) around[m.tri(i, e)].push_back(e);
+  std::vector<std::vector<int>> around = node_triangles(m);
 
-  ElasticityCoefficients c;
-  c.young = 1.0;
-  c.poisson = opt.poisson;
+  const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
+  FormulationParams params;
+  params.poisson = opt.poisson;
   ElasticityOptions eo;
+  eo.assembly = params.assembly;
   eo.solver = opt.solver;
 
   Mesh current = m;
@@ -81,7 +92,8 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
         if (fixed[i]) bc.fix(i, Eigen::Vector2d::Zero());
       for (int k = 0; k < count; ++k)
         bc.fix(moving[k], Eigen::Vector2d(fraction * (target.col(k) - current.x.col(moving[k]))));
-      const ElasticitySolution s = solve_elasticity(current, c, bc, eo);
+      const ElasticitySolution s =
+          solve_elasticity(current, formulation.coefficients(current, m, params), bc, eo);
       ++r.solves;
       Mesh trial = current;
       trial.x += s.u;
@@ -89,11 +101,12 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
       current = std::move(trial);
       r.reached += fraction * (1 - r.reached);
       accepted = true;
+      if (opt.flips && flip_edges(current) > 0) around = node_triangles(current);
     }
     if (!accepted) break;
     ++r.steps;
   }
-  r.x = current.x;
+  r.mesh = std::move(current);
   return r;
 }
 

@@ -8,12 +8,15 @@
 // The push goes in steps capped per node as in Fig 4.5a: a node moving along d
 // meets the line of the opposite edge of one of its triangles after
 // delta_i = available_push(...), and a step moves it by at most
-// cap * min(delta_1, delta_2, ...), cap < 1 (the thesis' bound is cap = 1, where
-// the element degenerates if its other nodes stood still). All front nodes
+// cap * min(delta_1, delta_2, ...), cap = 1 being the thesis' bound (an element
+// would degenerate there only if its other nodes stood still). All front nodes
 // advance by the same fraction of their remaining motion, the tightest node
 // setting it, so the front keeps its shape. After each elasticity solve on the
 // current mesh the result must be certified valid, else the step is halved.
+// After each accepted step, edges flip where that raises the worst radius ratio
+// (edge_flips.h): the triangles keep their number and surface, not their nodes.
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 #include "core/mesh.h"
@@ -22,15 +25,19 @@
 namespace homesh {
 
 struct RoomOptions {
-  double poisson = 0.4;  ///< nu of the analogy (E = 1)
-  double cap = 0.5;      ///< fraction of min(delta_i) a node may move per step, in (0, 1]
+  /// Formulation of curving/analogy_formulation.h, re-evaluated on the current
+  /// mesh at every step; "plain" (E = 1, no added terms) is the thesis' choice.
+  std::string formulation = "plain";
+  double poisson = 0.4;  ///< nu of the analogy
+  double cap = 1;        ///< fraction of min(delta_i) a node may move per step, in (0, 1]
   int max_steps = 200;   ///< accepted steps before giving up
   int max_halvings = 8;  ///< halvings of a failing step before giving up
+  bool flips = true;     ///< flip edges after each step (edge_flips.h)
   LinearSolverOptions solver;
 };
 
 struct RoomResult {
-  Eigen::Matrix2Xd x;     ///< 2 by #nodes positions of the last certified-valid state
+  Mesh mesh;              ///< the last certified-valid state (positions, flipped triangles)
   bool complete = false;  ///< every moving node reached its target
   double reached = 0;     ///< fraction of the motion done, in [0, 1]
   int steps = 0;          ///< accepted steps

@@ -98,7 +98,7 @@ TEST_CASE("layers around a circular hole: counts, depths, walls kept, valid", "[
     for (int k = 1; k <= n; ++k)
       CHECK((b.x.col(line.nodes[k]) - w).norm() == Approx(d[k] / std::cos(M_PI / 32)).epsilon(1e-12));
   }
-  // Layer k holds 2 E triangles; the input triangles keep their numbers.
+  // Layer k holds 2 E triangles; the input's triangles come first.
   for (int k = 0; k <= n; ++k)
     CHECK(std::count(r.layer.begin(), r.layer.end(), k) == (k == 0 ? m.num_triangles() : 2 * e));
   for (int t = 0; t < m.num_triangles(); ++t) CHECK(r.layer[t] == 0);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "curving/analogy_formulation.h"
 #include "fem/linear_solver.h"
 #include "layers/insert_layers.h"
 #include "layers/radius_ratio.h"
@@ -31,6 +32,7 @@ void run(Context& ctx, const Options& opt) {
   o.room.poisson = opt.get_double("nu");
   if (!(o.room.poisson > -1 && o.room.poisson < 0.5))
     throw Error("stage 'layers': option nu must be in (-1, 0.5)");
+  o.room.formulation = analogy_formulation(opt.get_string("formulation")).name;
   o.room.solver.method = opt.get_string("solver");
 
   const int order = m.order, nodes = m.num_nodes(), triangles = m.num_triangles();
@@ -38,8 +40,8 @@ void run(Context& ctx, const Options& opt) {
   if (r.from_corners)
     ctx.log.info("layers: the input is of order {}: its corners are layered and the result is "
                  "linear (curve it with -m curve:p=N)", order);
+  const std::vector<int> corner = corner_triangles(r, r.sharpest_node);
   m = std::move(r.mesh);
-  r.mesh = Mesh();
 
   const Eigen::VectorXd q = radius_ratios(m);
   Eigen::VectorXd layer(m.num_triangles());
@@ -50,12 +52,12 @@ void run(Context& ctx, const Options& opt) {
 
   std::string walls;
   for (const std::string& w : o.walls) walls += (walls.empty() ? "" : ",") + w;
-  ctx.log.info("layers: {} layers on {} ({} loops, {} wall edges, {} fans), thickness {:.6g} "
+  ctx.log.info("layers: {} layers on {} ({} loop(s), {} wall edges, {} fans), thickness {:.6g} "
                "(first {:g}, ratio {:g})", o.layers, walls, r.loops,
                r.wall_edges, r.fan_nodes, r.thickness, o.first, o.ratio);
-  ctx.log.info("layers: room opened in {} elastic steps (E = 1, nu = {:g}); {} -> {} triangles, "
-               "{} -> {} nodes", r.push_steps, o.room.poisson, triangles, m.num_triangles(),
-               nodes, m.num_nodes());
+  ctx.log.info("layers: room opened in {} elastic steps (formulation {}, nu {:g}); {} -> {} "
+               "triangles, {} -> {} nodes", r.push_steps, o.room.formulation, o.room.poisson,
+               triangles, m.num_triangles(), nodes, m.num_nodes());
   double worst = 1, sum = 0;
   int count = 0;
   for (int e = 0; e < m.num_triangles(); ++e)
@@ -66,7 +68,6 @@ void run(Context& ctx, const Options& opt) {
     }
   ctx.log.info("layers: radius ratio Q (Eq 4.17) of the {} layer triangles: min {:.4f}, mean {:.4f}",
                count, worst, sum / std::max(count, 1));
-  const std::vector<int> corner = corner_triangles(r, r.sharpest_node);
   double corner_worst = 1;
   for (int e : corner) corner_worst = std::min(corner_worst, q(e));
   const double degrees = r.sharpest_angle * 180 / M_PI;
@@ -93,7 +94,8 @@ Stage layers_stage() {
            {"normals", "single", "single | multi (fans of normals at sharp wall nodes)"},
            {"fan", "5", "normals per fan (odd, >= 3)"},
            {"fan_angle", "330", "domain angle (deg) from which a wall node gets a fan"},
-           {"nu", "0.4", "Poisson's ratio of the elastic push (E = 1)"},
+           {"formulation", "plain", "elastic analogy of the push (plain: E = 1, the thesis')"},
+           {"nu", "0.4", "Poisson's ratio of the elastic push"},
            {"solver", "ldlt", "linear solver: ldlt | cg (| cholmod)"}},
           run};
 }
