@@ -1,9 +1,13 @@
 #pragma once
-// A quality measure (quality/measure_registry.h) over every triangle of a mesh:
+// Quality measures (quality/measure_registry.h) over every triangle of a mesh:
 // values at each element's own nodes (for ElementNodeData views, drawn curved)
 // and the minimum over the nodes and a reference lattice (thesis Section 3.6
 // shows measures at ~200 points per element; the lattice order is a choice).
+// W is computed once per sample point and shared by all measures; elements are
+// processed in parallel (OpenMP), each independently, so results do not depend
+// on the thread count.
 #include <Eigen/Core>
+#include <vector>
 
 #include "core/mesh.h"
 #include "quality/element_quality.h"
@@ -22,8 +26,10 @@ struct MeshMeasure {
 /// so the lattice contains the element nodes).
 inline int default_lattice_order(int p) { return 2 * p; }
 
-/// Measure q over every triangle of m, sampled at the element nodes and at the
-/// nodes of the order-`lattice` reference lattice, with normalisation `ref`.
-MeshMeasure mesh_measure(const Mesh& m, const Measure& q, int lattice, Reference ref);
+/// Each measure of `qs` over every triangle of m, sampled at the nodes of the
+/// order-`lattice` reference lattice and at the element nodes, with
+/// normalisation `ref`. One result per measure, in the order of `qs`.
+std::vector<MeshMeasure> mesh_measures(const Mesh& m, const std::vector<const Measure*>& qs,
+                                       int lattice, Reference ref);
 
 }  // namespace homesh

@@ -1,0 +1,50 @@
+#include "quality/mesh_quality.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "../fem/fem_test_support.h"
+#include "element/reference_nodes.h"
+#include "quality/mesh_validity.h"
+
+using namespace homesh;
+
+TEST_CASE("mesh_measures agrees with element_quality, whatever the lattice", "[quality]") {
+  Mesh m = fem_test::unit_square(3, 3);
+  fem_test::warp(m, 0.05);
+  std::vector<const Measure*> qs;
+  for (const char* name : {"Q1", "Q4", "Q11", "Q17"}) qs.push_back(&measure(name));
+  for (int lattice : {6, 7}) {  // a multiple of p = 3 (nodes on it), and not
+    CAPTURE(lattice);
+    const auto results = mesh_measures(m, qs, lattice, Reference::element_max);
+    Eigen::Matrix2Xd uv(2, reference_nodes(lattice).cols() + 10);
+    uv << reference_nodes(lattice), reference_nodes(3);
+    for (std::size_t j = 0; j < qs.size(); ++j) {
+      for (int e = 0; e < m.num_triangles(); ++e) {
+        const ElementQuality ref =
+            element_quality(*qs[j], m.triangle_nodes(e), 3, uv, Reference::element_max);
+        REQUIRE(results[j].element_min(e) == Approx(ref.min).epsilon(1e-12));
+        for (int i = 0; i < 10; ++i)
+          REQUIRE(results[j].node_values(i, e) ==
+                  Approx(ref.values(uv.cols() - 10 + i)).epsilon(1e-12));
+      }
+    }
+  }
+}
+
+TEST_CASE("mesh_validity counts the invalid triangles and finds the worst", "[quality]") {
+  Mesh m = fem_test::unit_square(2, 2);
+  REQUIRE(mesh_validity(m).invalid == 0);
+  REQUIRE(mesh_validity(m).worst == Approx(1.0));
+  // Push the mid-node of one diagonal edge across the triangle beside it.
+  int moved = -1;
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (std::abs(m.x(0, i) - 0.25) < 1e-12 && std::abs(m.x(1, i) - 0.25) < 1e-12) moved = i;
+  REQUIRE(moved >= 0);
+  m.x(0, moved) += 0.4;
+  const MeshValidity v = mesh_validity(m);
+  REQUIRE(v.invalid == 1);  // the triangle it is pushed into (the other bulges out)
+  REQUIRE(v.worst < 0);
+  REQUIRE(v.ratio(v.worst_element) == v.worst);
+  REQUIRE(v.ratio.minCoeff() == v.worst);
+}
