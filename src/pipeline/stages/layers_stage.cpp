@@ -55,7 +55,7 @@ void run(Context& ctx, const Options& opt) {
   ctx.log.info("layers: {} layers on {} ({} loop(s), {} wall edges, {} fans), thickness {:.6g} "
                "(first {:g}, ratio {:g})", o.layers, walls, r.loops,
                r.wall_edges, r.fan_nodes, r.thickness, o.first, o.ratio);
-  ctx.log.info("layers: room opened in {} elastic steps (formulation {}, nu {:g}); {} -> {} "
+  ctx.log.info("layers: room opened in {} elastic step(s) (formulation {}, nu {:g}); {} -> {} "
                "triangles, {} -> {} nodes", r.push_steps, o.room.formulation, o.room.poisson,
                triangles, m.num_triangles(), nodes, m.num_nodes());
   double worst = 1, sum = 0;
@@ -71,11 +71,13 @@ void run(Context& ctx, const Options& opt) {
   double corner_worst = 1;
   for (int e : corner) corner_worst = std::min(corner_worst, q(e));
   const double degrees = r.sharpest_angle * 180 / M_PI;
-  ctx.log.info("layers: at the sharpest wall node ({:.6g}, {:.6g}), {:.1f} deg ({} normals): "
-               "min Q {:.4f} over its {} layer triangles",
+  const auto normals_there = std::count_if(r.lines.begin(), r.lines.end(), [&](const LayerLine& l) {
+    return l.wall_node == r.sharpest_node;
+  });
+  ctx.log.info("layers: at the sharpest wall node ({:.6g}, {:.6g}), {:.1f} deg ({}): min Q {:.4f} "
+               "over its {} layer triangles",
                m.x(0, r.sharpest_node), m.x(1, r.sharpest_node), degrees,
-               std::count_if(r.lines.begin(), r.lines.end(),
-                             [&](const LayerLine& l) { return l.wall_node == r.sharpest_node; }),
+               normals_there > 1 ? fmt::format("fan of {} normals", normals_there) : "single normal",
                corner_worst, corner.size());
   if (o.normals.multi && r.fan_nodes == 0)
     ctx.log.warn("layers: no wall node reaches fan_angle = {:g} deg (the sharpest has {:.1f} deg): "

@@ -1,0 +1,132 @@
+// The layers stage run as a user does (thesis Section 4.3, Figs 4.8-4.12):
+// boundary layers opened by the elastic analogy, then curved, certified valid.
+#include <gmsh.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <string>
+
+#include "gmsh/read_model.h"
+#include "../support/gmsh_session.h"
+#include "../support/run_command.h"
+
+using homesh::test::run_homesh;
+
+namespace {
+
+const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+
+struct LayerLog {
+  int wall_edges = 0, fans = 0, before = 0, after = 0, corner_triangles = 0;
+  double corner_q = 0;
+};
+
+// The numbers of the layers stage's log.
+LayerLog parse(const std::string& out) {
+  LayerLog l;
+  std::smatch m;
+  REQUIRE(std::regex_search(out, m, std::regex(R"((\d+) wall edges, (\d+) fans)")));
+  l.wall_edges = std::stoi(m[1]);
+  l.fans = std::stoi(m[2]);
+  REQUIRE(std::regex_search(out, m, std::regex(R"((\d+) -> (\d+) triangles)")));
+  l.before = std::stoi(m[1]);
+  l.after = std::stoi(m[2]);
+  REQUIRE(std::regex_search(out, m, std::regex(R"(min Q (\d\.\d+) over its (\d+) layer triangles)")));
+  l.corner_q = std::stod(m[1]);
+  l.corner_triangles = std::stoi(m[2]);
+  return l;
+}
+
+void remove_output(const std::string& out) {
+  std::remove(out.c_str());
+  std::remove((out + ".opt").c_str());
+}
+
+}  // namespace
+
+TEST_CASE("layers: 3 layers around the plate's hole, curved at p = 3, valid (Fig 4.8)", "[app]") {
+  const std::string out = "/tmp/homesh_layers_plate.msh";
+  const auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=3:first=0.01:"
+                                  "ratio=1.3 -m curve:p=3 -m quality " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
+  const LayerLog l = parse(r.output);
+  CHECK(l.fans == 0);
+  CHECK(l.after == l.before + 2 * 3 * l.wall_edges);
+  // The hole keeps its nodes on the circle; the first layer's corners stand 0.01 off it
+  // (times the miter 1 / sin(theta / 2), theta about 191 deg; the curving moves them a little).
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  const homesh::Mesh m = homesh::gmsh_adapter::read_model(out);
+  REQUIRE(m.order == 3);
+  double off = 0, first = 1;
+  for (int k = 0; k < m.num_lines(); ++k)
+    for (int j = 0; j <= 3; ++j) {
+      const double rad = m.x.col(m.line(j, k)).norm();
+      if (rad < 0.75) off = std::max(off, std::abs(rad - 0.5));
+    }
+  for (int e = 0; e < m.num_triangles(); ++e)
+    for (int j = 0; j < 3; ++j) {
+      const int i = m.tri(j, e);
+      if (m.node_class[i].dim == 2) first = std::min(first, m.x.col(i).norm() - 0.5);
+    }
+  CHECK(off < 1e-12);
+  CHECK(first > 0.01 - 1e-12);
+  CHECK(first < 0.0105);
+  remove_output(out);
+}
+
+TEST_CASE("layers: 15 layers on NACA-7526 with single normals, curved at p = 3 (Fig 4.9)", "[app]") {
+  const std::string out = "/tmp/homesh_layers_naca15.msh";
+  const auto r = run_homesh(geo + "naca.geo -m mesh -m layers:walls=aerofoil:n=15:first=1e-3:"
+                                  "ratio=1.2 -m curve:p=3 -m quality " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("thickness 0.0720351") != std::string::npos);
+  REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
+  const LayerLog l = parse(r.output);
+  CHECK(l.after == l.before + 2 * 15 * l.wall_edges);
+  CHECK(l.corner_triangles == 4 * 15);  // the two wall-edge strips at the trailing edge
+  remove_output(out);
+}
+
+TEST_CASE("layers: 5 normals at the trailing edge beat a single one (Figs 4.10, 4.12)", "[app]") {
+  const std::string out = "/tmp/homesh_layers_naca4.msh";
+  const std::string layers = "naca.geo -m mesh -m layers:walls=aerofoil:n=4:first=1e-3:ratio=1.2";
+  auto r = run_homesh(geo + layers + " " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const LayerLog single = parse(r.output);
+  // The trailing edge's domain angle is 326 deg: below the default fan_angle, as the log warns.
+  r = run_homesh(geo + layers + ":normals=multi " + out);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("no wall node reaches fan_angle = 330 deg") != std::string::npos);
+  r = run_homesh(geo + layers + ":normals=multi:fan=5:fan_angle=320 -m curve:p=3 -m quality " + out);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
+  const LayerLog multi = parse(r.output);
+  CHECK(multi.fans == 1);
+  CHECK(multi.after == single.after + 2 * 4 * (5 - 1));
+  CHECK(multi.corner_triangles == 4 * 4 + (5 - 1) * (2 * 4 - 1));
+  CHECK(single.corner_q < 0.1);
+  CHECK(multi.corner_q > 0.3);
+  remove_output(out);
+}
+
+TEST_CASE("layers: refusals name the cause", "[app]") {
+  const std::string out = "/tmp/homesh_layers_refused.msh";
+  auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=5:first=0.1:ratio=1.5 " + out);
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("cannot open a room 1.319 thick for 5 layers") != std::string::npos);
+  r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=wing " + out);
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("no wall 'wing': not a curve physical group (hole, farfield)") !=
+        std::string::npos);
+  r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:normals=many " + out);
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("normals=many: expected single or multi") != std::string::npos);
+  remove_output(out);
+}
