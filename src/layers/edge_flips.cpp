@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "layers/plane_geometry.h"
@@ -19,6 +20,9 @@ double quality(const Mesh& m, int a, int b, int c) {
 }  // namespace
 
 int flip_edges(Mesh& m, double gain, int max_sweeps) {
+  std::set<std::pair<int, int>> lines;
+  for (int k = 0; k < m.num_lines(); ++k)
+    lines.insert(std::minmax(m.line(0, k), m.line(1, k)));
   int flips = 0;
   for (int sweep = 0; sweep < max_sweeps; ++sweep) {
     // Directed edge (a, b) -> triangle listing it counter-clockwise, and its third node.
@@ -35,7 +39,8 @@ int flip_edges(Mesh& m, double gain, int max_sweeps) {
       if (it == side.end()) continue;
       const auto [e, c] = left;
       const auto [f, d] = it->second;
-      if (touched[e] || touched[f] || m.tri_entity[e] != m.tri_entity[f]) continue;
+      if (touched[e] || touched[f] || m.tri_entity[e] != m.tri_entity[f] || lines.count(edge))
+        continue;
       // Triangles (a, b, c) and (b, a, d); the other diagonal gives (c, d, b) and (d, c, a).
       const double now = std::min(quality(m, a, b, c), quality(m, b, a, d));
       const double then = std::min(quality(m, c, d, b), quality(m, d, c, a));

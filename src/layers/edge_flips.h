@@ -8,7 +8,8 @@
 namespace homesh {
 
 /// Flips, in place, each edge shared by two counter-clockwise triangles of the
-/// same surface when the other diagonal of their quad gives two
+/// same surface, and not a line element (an embedded curve), when the other
+/// diagonal of their quad gives two
 /// counter-clockwise triangles whose worst radius ratio is larger by more than
 /// `gain`; sweeps until no edge flips (at most `max_sweeps` sweeps). Nodes, the
 /// triangle count and each triangle's surface are kept. Returns the number of

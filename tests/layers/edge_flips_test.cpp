@@ -43,7 +43,7 @@ TEST_CASE("edge flips raise the worst radius ratio and keep count and surfaces",
   CHECK(flip_edges(m) == 0);  // already the better diagonal
 }
 
-TEST_CASE("edge flips leave good diagonals, non-convex quads and surface borders", "[layers]") {
+TEST_CASE("edge flips leave good diagonals, non-convex quads, surface borders, lines", "[layers]") {
   Mesh good = quad(-1.5);  // the diagonal 0-2 is the short one here
   CHECK(flip_edges(good) == 0);
   // An arrowhead with its reflex corner at node 0: the diagonal 1-3 runs outside.
@@ -53,4 +53,9 @@ TEST_CASE("edge flips leave good diagonals, non-convex quads and surface borders
   CHECK(flip_edges(concave) == 0);
   Mesh border = quad(1.5, 2);
   CHECK(flip_edges(border) == 0);
+  Mesh embedded = quad(1.5);  // the diagonal carries a line: an embedded curve
+  embedded.line.resize(2, 1);
+  embedded.line << 2, 0;
+  embedded.line_entity = {7};
+  CHECK(flip_edges(embedded) == 0);
 }
