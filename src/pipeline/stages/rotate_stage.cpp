@@ -82,10 +82,10 @@ void run(Context& ctx, const Options& opt) {
   r.max_angle = opt.get_double("max");
   if (!(r.max_angle >= 0)) throw Error("stage 'rotate': option max must be >= 0");
   r.substeps = opt.get_int("substeps", 1, 1000);
-  const std::string from = opt.get_string("from");
-  if (from != "current" && from != "initial")
-    throw Error("stage 'rotate': option from=" + from + ": expected current or initial");
-  r.total = from == "initial";
+  const std::string pose = opt.get_string("pose");
+  if (pose != "current" && pose != "initial")
+    throw Error("stage 'rotate': option pose=" + pose + ": expected current or initial");
+  r.total = pose == "initial";
   r.formulation = analogy_formulation(opt.get_string("formulation")).name;
   r.params.poisson = opt.get_double("nu");
   if (!(r.params.poisson > -1 && r.params.poisson < 0.5))
@@ -106,16 +106,21 @@ void run(Context& ctx, const Options& opt) {
                  {"invalid_at_failure", res.invalid_at_failure},
                  {"centre_x", r.centre.x()},
                  {"centre_y", r.centre.y()}};
-  ctx.log.info("rotate: theta_max = {:g} deg, mean CG iterations {:.0f}", res.theta_max,
-               res.mean_iterations);
+  if (r.solver.method == "cg")
+    ctx.log.info("rotate: theta_max = {:g} deg, mean CG iterations {:.0f}", res.theta_max,
+                 res.mean_iterations);
+  else
+    ctx.log.info("rotate: theta_max = {:g} deg", res.theta_max);
   ctx.log.info(
-      "  wall {} about ({:.6g}, {:.6g}), step {:g} deg, formulation {}, nu {:g}, heat {:g}, "
-      "solver {}: {} steps, {} solves, worst minJ/maxJ {:.4f}, {}",
-      opt.get_string("wall"), r.centre.x(), r.centre.y(), r.step, r.formulation,
-      r.params.poisson, r.params.heat, r.solver.method, res.steps, res.solves, res.worst_ratio,
-      res.reached_max ? "maximum angle reached"
-                      : fmt::format("the next step leaves {} triangles invalid",
-                                    res.invalid_at_failure));
+      "  wall {} about ({:.6g}, {:.6g}), step {:g} deg posed on the {} mesh ({} solves each), "
+      "formulation {}, nu {:g}, heat {:g}, solver {}",
+      opt.get_string("wall"), r.centre.x(), r.centre.y(), r.step, pose,
+      r.total ? 1 : r.substeps, r.formulation, r.params.poisson, r.params.heat, r.solver.method);
+  ctx.log.info("  {} steps, {} solves, worst minJ/maxJ {:.4f}, {}", res.steps, res.solves,
+               res.worst_ratio,
+               res.reached_max ? "maximum angle reached"
+                               : fmt::format("the next step leaves {} triangles invalid",
+                                             res.invalid_at_failure));
 }
 
 std::string preconditioners() {
@@ -133,8 +138,8 @@ Stage rotate_stage() {
            {"centre", "auto", "x,y, or auto: centre of the circle fitted to the wall's nodes"},
            {"step", "1", "angle step, degrees (negative: clockwise)"},
            {"max", "360", "largest angle tried, degrees"},
-           {"substeps", "1", "solves per step (from=current)"},
-           {"from", "current", "pose each step on the current mesh (thesis) or the initial one"},
+           {"substeps", "1", "solves per step (pose=current)"},
+           {"pose", "current", "pose each step on the current mesh (thesis) or the initial one"},
            {"formulation", "plain", formulation_names()},
            {"nu", "0.4", "Poisson's ratio"},
            {"heat", "1", "scale of the added force/heat terms (> 0 expands hot elements)"},
