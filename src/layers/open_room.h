@@ -1,7 +1,7 @@
 #pragma once
 // Opening the room for the boundary layers (thesis Section 4.3, Eq 4.16): the
 // front nodes are pushed from the walls into the domain by the elastic analogy
-// with E = 1, nu = 0.4 and no added terms, the displacement
+// (by default the thesis' E = 1, nu = 0.4, no added terms), the displacement
 // delta_p = x_Omega - x_Gamma prescribed on them (Eq 4.16), every other
 // boundary node fixed.
 //
