@@ -1,6 +1,7 @@
 #include "voronoi/voronoi_engines.h"
 
 #include "core/error.h"
+#include "voronoi/fast_marching_engine.h"
 #include "voronoi/level_set_engine.h"
 
 namespace homesh {
@@ -11,6 +12,10 @@ const std::vector<VoronoiEngine>& voronoi_engines() {
        "one level set per seed, first-order upwind, collisions frozen on grid lines "
        "(thesis Eqs 2.1-2.13)",
        grow_crystals_level_set},
+      {"fast_marching",
+       "all crystals in one anisotropic fast-marching sweep (FM-LBR stencils), each crystal's "
+       "own arrival time kept where crystals meet; O(N log N) in the grid nodes",
+       grow_crystals_fast_marching},
   };
   return engines;
 }

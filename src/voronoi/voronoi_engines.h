@@ -1,8 +1,7 @@
 #pragma once
 // The crystal-growth engines, chosen by name: one table drives the CLI choice,
 // the Python API and the test loops. "level_set" is the faithful engine of
-// thesis Chapter 2; a fast-marching engine (Section 2.8) is to join it with
-// the same signature.
+// thesis Chapter 2; "fast_marching" the fast one Section 2.8 suggests.
 #include <string>
 #include <vector>
 
@@ -14,7 +13,7 @@ using VoronoiEngineRun = CrystalPartition (*)(const VoronoiProblem& problem,
                                               const VoronoiOptions& options);
 
 struct VoronoiEngine {
-  std::string name;  ///< "level_set"
+  std::string name;  ///< "level_set", "fast_marching"
   std::string help;  ///< one line for listings
   VoronoiEngineRun run;
 };

@@ -11,25 +11,6 @@ using namespace homesh;
 
 namespace {
 
-// The first `count` seed sets of `size` seeds uniform in [0.05, 0.95]^2 in
-// general position for a grid step ds in metric M: no four seeds within 2
-// cells of cocircular (metric length), no Voronoi vertex within 8 cells of the
-// border. (Uniform random sets are mostly near-degenerate somewhere: a
-// Delaunay edge whose two triangles are nearly cocircular flips under the
-// scheme's O(ds) errors, as it would under any perturbation of that size.)
-std::vector<Eigen::Matrix2Xd> general_seed_sets(int count, int size, double ds,
-                                                const Eigen::Matrix2d& M) {
-  const Eigen::Matrix2d Lt = M.llt().matrixL().transpose();
-  const double cell = ds / metric_min_speed(M);
-  std::vector<Eigen::Matrix2Xd> out;
-  for (unsigned seed = 1; static_cast<int>(out.size()) < count; ++seed) {
-    const Eigen::Matrix2Xd seeds = test::uniform_seeds(size, seed, 0.05, 0.95);
-    const test::DelaunayInBox d = test::delaunay_in_box(seeds, 0.0, 1.0, Lt);
-    if (d.incircle_margin >= 2 * cell && d.border_margin >= 8 * ds) out.push_back(seeds);
-  }
-  return out;
-}
-
 VoronoiProblem unit_square(int n, const Eigen::Matrix2Xd& seeds, const MetricField& metric) {
   VoronoiProblem p;
   p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, n, n);
@@ -44,7 +25,7 @@ TEST_CASE("in a constant isotropic metric the dual is CGAL's Delaunay triangulat
           "[voronoi][delaunay]") {
   const int n = 401;
   const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
-  for (const Eigen::Matrix2Xd& seeds : general_seed_sets(1, 20, 1.0 / (n - 1), I)) {
+  for (const Eigen::Matrix2Xd& seeds : test::general_seed_sets(1, 20, 1.0 / (n - 1), I)) {
     const VoronoiDelaunay v = voronoi_delaunay(unit_square(n, seeds, MetricField::constant(I)));
     CHECK(v.valid());
     CHECK(test::rotated(v.dual.triangles) == test::delaunay_in_box(seeds, 0.0, 1.0).triangles);
@@ -67,7 +48,7 @@ TEST_CASE(
   const int n = 251;
   const Eigen::Matrix2d M = metric_from_axes(0.6, 1.0, 0.4);
   const Eigen::Matrix2d Lt = M.llt().matrixL().transpose();
-  for (const Eigen::Matrix2Xd& seeds : general_seed_sets(1, 15, 1.0 / (n - 1), M)) {
+  for (const Eigen::Matrix2Xd& seeds : test::general_seed_sets(1, 15, 1.0 / (n - 1), M)) {
     const VoronoiDelaunay v = voronoi_delaunay(unit_square(n, seeds, MetricField::constant(M)));
     CHECK(v.valid());
     const auto expected = test::delaunay_in_box(seeds, 0.0, 1.0, Lt).triangles;

@@ -2,6 +2,7 @@
 // Shared fixtures of the Voronoi tests: reproducible seeds, circumcentres,
 // the triangles of CGAL's Delaunay triangulation a grid partition can show,
 // and how far a seed set is from a degenerate one.
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <algorithm>
@@ -14,6 +15,7 @@
 
 #include "voronoi/cgal_delaunay.h"
 #include "voronoi/dual_triangulation.h"
+#include "voronoi/metric_field.h"
 
 namespace homesh::test {
 
@@ -74,6 +76,25 @@ inline DelaunayInBox delaunay_in_box(const Eigen::Matrix2Xd& seeds, double lo, d
       if (q != t[0] && q != t[1] && q != t[2])
         out.incircle_margin =
             std::min(out.incircle_margin, std::abs((mapped.col(q) - c).norm() - R));
+  }
+  return out;
+}
+
+// The first `count` seed sets of `size` seeds uniform in [0.05, 0.95]^2 in
+// general position for a grid step ds in metric M: no four seeds within 2
+// cells of cocircular (metric length), no Voronoi vertex within 8 cells of the
+// border. (Uniform random sets are mostly near-degenerate somewhere: a
+// Delaunay edge whose two triangles are nearly cocircular flips under the
+// scheme's O(ds) errors, as it would under any perturbation of that size.)
+inline std::vector<Eigen::Matrix2Xd> general_seed_sets(int count, int size, double ds,
+                                                       const Eigen::Matrix2d& M) {
+  const Eigen::Matrix2d Lt = M.llt().matrixL().transpose();
+  const double cell = ds / metric_min_speed(M);
+  std::vector<Eigen::Matrix2Xd> out;
+  for (unsigned seed = 1; static_cast<int>(out.size()) < count; ++seed) {
+    const Eigen::Matrix2Xd seeds = uniform_seeds(size, seed, 0.05, 0.95);
+    const DelaunayInBox d = delaunay_in_box(seeds, 0.0, 1.0, Lt);
+    if (d.incircle_margin >= 2 * cell && d.border_margin >= 8 * ds) out.push_back(seeds);
   }
   return out;
 }

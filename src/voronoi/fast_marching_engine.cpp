@@ -1,0 +1,324 @@
+#include "voronoi/fast_marching_engine.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+#include "voronoi/stencil_field.h"
+
+namespace homesh {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Smallest semi-axis, in cells, of the block of exact times round a seed.
+constexpr double kSeedBlockCells = 3.0;
+// In a varying metric field a time is measured straight from a source only
+// within this many cells (the metric is taken as the mean of the two ends').
+constexpr double kTrustCells = 8.0;
+
+// The arrival time of one crystal at one node, and the source it is measured
+// from; the entries of a node form a singly linked list through `next`.
+struct Entry {
+  double time = kInf;
+  double source_time = 0.0;
+  int source = -1;  ///< a node, or -1 - s for seed s
+  int node = -1;
+  int label = -1;
+  int next = -1;
+  std::uint8_t accepted = 0;
+  /// Stencil steps from the crystal's own region (0 inside it): the smallest
+  /// over the accepted entries that updated this one, plus 1.
+  std::uint8_t hop = 255;
+};
+
+class Sweep {
+ public:
+  Sweep(const StencilField& field, const Eigen::Matrix2Xd& seeds, std::vector<Eigen::Matrix2d> M)
+      : field_(field),
+        seeds_(seeds),
+        seed_metric_(std::move(M)),
+        nodes_(field.grid().node_count()) {
+    entries_.reserve(field.grid().node_count() + field.grid().node_count() / 4);
+  }
+
+  // Exact times |x - p_s|_{M_s} on the nodes of the metric ball of smallest
+  // semi-axis `cells` cells round seed s that see the seed through the domain.
+  int seed_block(int s, double cells) {
+    const CartesianGrid& g = field_.grid();
+    const Eigen::Vector2d p = seeds_.col(s);
+    const Eigen::Matrix2d& M = seed_metric_[s];
+    const Eigen::Matrix2d Minv = M.inverse();
+    const double R = cells * g.ds() / metric_min_speed(M);
+    const double hx = R * std::sqrt(Minv(0, 0)), hy = R * std::sqrt(Minv(1, 1));
+    const auto lo = [](double v) { return static_cast<int>(std::floor(v)); };
+    const auto up = [](double v) { return static_cast<int>(std::ceil(v)); };
+    const int i0 = std::max(0, lo((p.x() - hx - g.origin.x()) / g.dx));
+    const int i1 = std::min(g.nx - 1, up((p.x() + hx - g.origin.x()) / g.dx));
+    const int j0 = std::max(0, lo((p.y() - hy - g.origin.y()) / g.dy));
+    const int j1 = std::min(g.ny - 1, up((p.y() + hy - g.origin.y()) / g.dy));
+    int placed = 0;
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) {
+        const int x = g.index(i, j);
+        const Eigen::Vector2d v = g.point(i, j) - p;
+        const double t = std::sqrt(v.dot(M * v));
+        if (t > R || !field_.inside(x) || !field_.visible(p, g.point(i, j))) continue;
+        const int e = find_or_add(x, s);
+        entries_[e].hop = 0;
+        lower(e, t, -1 - s, 0.0);
+        ++placed;
+      }
+    return placed;
+  }
+
+  // Accepts entries in increasing time up to `stop`; false if stopped early.
+  bool run(double stop, long max_steps) {
+    while (!heap_.empty()) {
+      const auto [t, e] = heap_.top();
+      if (t > stop || (max_steps > 0 && steps_ >= max_steps)) return false;
+      heap_.pop();
+      Entry& en = entries_[e];
+      if (en.accepted || en.time != t) continue;
+      en.accepted = 1;
+      ++steps_;
+      if (nodes_[en.node].winner < 0) {
+        nodes_[en.node].winner = e;
+        nodes_[en.node].winner_label = en.label;
+        en.hop = 0;
+      }
+      if (en.hop < kOwnTimeBand) spread(e);
+    }
+    return true;
+  }
+
+  // Nodes the hexagons never reach (at the grid corners, where every offset
+  // into the grid is too long): a Dijkstra over the 8 neighbours from the
+  // labelled nodes, each step costing its length in the metric of the
+  // crystal taking it.
+  void fill_unreached() {
+    const CartesianGrid& g = field_.grid();
+    const auto offer = [&](int x) {
+      const int i = x % g.nx, j = x / g.nx;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const int a = i + di, b = j + dj;
+          if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= g.nx || b >= g.ny) continue;
+          const int z = g.index(a, b);
+          if (nodes_[z].winner >= 0 || !field_.inside(z)) continue;
+          const Entry& from = entries_[nodes_[x].winner];
+          const Eigen::Vector2d v(di * g.dx, dj * g.dy);
+          const double t = from.time + std::sqrt(v.dot(field_.node_metric(from.label, z) * v));
+          lower(find_or_add(z, from.label), t, z, t);
+        }
+    };
+    for (int x = 0; x < g.node_count(); ++x)
+      if (nodes_[x].winner >= 0) offer(x);
+    while (!heap_.empty()) {
+      const auto [t, e] = heap_.top();
+      heap_.pop();
+      Entry& en = entries_[e];
+      if (en.accepted || en.time != t || nodes_[en.node].winner >= 0) continue;
+      en.accepted = 1;
+      en.hop = 0;
+      nodes_[en.node].winner = e;
+      nodes_[en.node].winner_label = en.label;
+      offer(en.node);
+    }
+  }
+
+  long steps() const { return steps_; }
+  // The winning entry at a node, or -1.
+  int winner(int node) const { return nodes_[node].winner; }
+  const Entry& entry(int e) const { return entries_[e]; }
+
+ private:
+  int find(int node, int label) const {
+    for (int e = nodes_[node].head; e >= 0; e = entries_[e].next)
+      if (entries_[e].label == label) return e;
+    return -1;
+  }
+  int find_or_add(int node, int label) {
+    if (const int e = find(node, label); e >= 0) return e;
+    Entry en;
+    en.node = node;
+    en.label = label;
+    en.next = nodes_[node].head;
+    entries_.push_back(en);
+    nodes_[node].head = static_cast<int>(entries_.size()) - 1;
+    return nodes_[node].head;
+  }
+  void lower(int e, double t, int source, double source_time) {
+    Entry& en = entries_[e];
+    if (t >= en.time) return;
+    en.time = t;
+    en.source = source;
+    en.source_time = source_time;
+    heap_.push({t, e});
+  }
+  Eigen::Vector2d point(int source) const {
+    const CartesianGrid& g = field_.grid();
+    return source < 0 ? Eigen::Vector2d(seeds_.col(-1 - source))
+                      : g.point(source % g.nx, source / g.nx);
+  }
+  // The time of crystal s at node x measured straight from the source of
+  // entry `from`: its time plus the length of the segment in the crystal's
+  // metric (in a varying field, the mean of the metrics at its ends, and only
+  // within kTrustCells cells). +infinity if the segment leaves the domain.
+  double from_source(int s, int x, const Entry& from) const {
+    const CartesianGrid& g = field_.grid();
+    const Eigen::Vector2d v = g.point(x % g.nx, x / g.nx) - point(from.source);
+    const Eigen::Matrix2d& Mx = field_.node_metric(s, x);
+    double length2 = v.dot(Mx * v);
+    if (field_.varying()) {
+      if (v.norm() > kTrustCells * g.ds()) return kInf;
+      const Eigen::Matrix2d& Mo =
+          from.source < 0 ? seed_metric_[s] : field_.node_metric(s, from.source);
+      length2 = 0.5 * (length2 + v.dot(Mo * v));
+    }
+    if (!field_.visible(point(from.source), g.point(x % g.nx, x / g.nx))) return kInf;
+    return from.source_time + std::sqrt(length2);
+  }
+  // The accepted entry of crystal s at node x + o, if x + o is a node the
+  // update from x may use, else -1.
+  int upwind(int s, int x, const Eigen::Vector2i& o, double euclid) const {
+    const CartesianGrid& g = field_.grid();
+    const int i = x % g.nx + o.x(), j = x / g.nx + o.y();
+    if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) return -1;
+    const int z = g.index(i, j);
+    const int e = find(z, s);
+    if (e < 0 || !entries_[e].accepted || !field_.passable(x, z, euclid)) return -1;
+    return e;
+  }
+  // Entry e (crystal s at node y) was accepted: update the nodes whose
+  // stencil holds y, from the one-sided step and the two sectors next to it
+  // (Hopf-Lax), and from the sources of the entries used; the time measured
+  // from a source wins if not larger, else x becomes a source itself.
+  void spread(int e) {
+    const int s = entries_[e].label, y = entries_[e].node;
+    const double a = entries_[e].time;
+    const int hop = entries_[e].hop + 1;
+    field_.for_each_reverse(s, y, [&](int x, int k, double euclid) {
+      if (!field_.inside(x)) return;
+      const int w = nodes_[x].winner_label;
+      if (w >= 0 && (w == s || hop > kOwnTimeBand)) return;
+      if (!field_.passable(x, y, euclid)) return;
+      const int target = find_or_add(x, s);
+      if (entries_[target].accepted) return;
+      const StencilField::Local l = field_.local(s, x, k);
+      double t = a + l.length;
+      const int before = upwind(s, x, l.prev, l.euclid_prev);
+      if (before >= 0) t = std::min(t, hopf_lax(l.before, entries_[before].time, a));
+      const int after = upwind(s, x, l.next, l.euclid_next);
+      if (after >= 0) t = std::min(t, hopf_lax(l.after, a, entries_[after].time));
+      int source = x;
+      double source_time = t, best = kInf;
+      for (const int u : {e, before, after}) {
+        if (u < 0 || (u != e && entries_[u].source == entries_[e].source)) continue;
+        const double ts = from_source(s, x, entries_[u]);
+        if (ts < best)
+          best = ts, source = entries_[u].source, source_time = entries_[u].source_time;
+      }
+      if (best <= t)
+        t = std::max(best, a);
+      else
+        source = x, source_time = t;
+      Entry& en = entries_[target];
+      en.hop = static_cast<std::uint8_t>(std::min<int>(en.hop, hop));
+      lower(target, t, source, source_time);
+    });
+  }
+
+  const StencilField& field_;
+  const Eigen::Matrix2Xd& seeds_;
+  std::vector<Eigen::Matrix2d> seed_metric_;
+  std::vector<Entry> entries_;
+  // Per node, side by side (one cache line per visit): the head of its entry
+  // list, the winning entry and its label (-1: none yet).
+  struct NodeState {
+    int head = -1;
+    int winner = -1;
+    int winner_label = -1;
+  };
+  std::vector<NodeState> nodes_;
+  std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>,
+                      std::greater<std::pair<double, int>>>
+      heap_;
+  long steps_ = 0;
+};
+
+}  // namespace
+
+CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
+                                             const VoronoiOptions& options) {
+  const CartesianGrid& g = problem.grid;
+  const int S = static_cast<int>(problem.seeds.cols());
+  if (S == 0) throw Error("voronoi: no seeds");
+  if (problem.contact == Contact::wet)
+    throw Error("voronoi: the fast_marching engine meets the boundary dry only (use level_set)");
+  const StencilField field(problem);
+  std::vector<Eigen::Matrix2d> M(S);
+  for (int s = 0; s < S; ++s) {
+    const Eigen::Vector2d p = problem.seeds.col(s);
+    const Eigen::Vector2d rel = p - g.origin;
+    if (!(rel.x() >= 0 && rel.y() >= 0 && rel.x() <= (g.nx - 1) * g.dx &&
+          rel.y() <= (g.ny - 1) * g.dy))
+      throw Error("voronoi: seed " + std::to_string(s) + " lies outside the grid");
+    if (field.domain_at(p) > g.ds())
+      throw Error("voronoi: seed " + std::to_string(s) + " lies outside the domain");
+    M[s] = field.metric(s, p);
+  }
+  Sweep sweep(field, problem.seeds, M);
+  const double cells = options.seed_radius > 0.0 ? options.seed_radius / g.ds() : kSeedBlockCells;
+  for (int s = 0; s < S; ++s)
+    if (sweep.seed_block(s, cells) == 0)
+      throw Error("voronoi: seed " + std::to_string(s) + " sees no grid node of the domain");
+  const double stop = options.stop_time > 0.0 ? options.stop_time : kInf;
+  CrystalPartition out;
+  out.settled = sweep.run(stop, options.max_steps);
+  if (out.settled) sweep.fill_unreached();
+  out.steps = static_cast<int>(std::min<long>(sweep.steps(), std::numeric_limits<int>::max()));
+  out.labels = Eigen::VectorXi::Constant(g.node_count(), -1);
+  for (int x = 0; x < g.node_count(); ++x) {
+    const int w = sweep.winner(x);
+    if (w < 0) {
+      out.uncovered += field.inside(x);
+      continue;
+    }
+    out.labels(x) = sweep.entry(w).label;
+    out.time = std::max(out.time, sweep.entry(w).time);
+  }
+  std::vector<std::array<int, 2>> collisions;
+  std::vector<char> contact(S, 0);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const int a = out.labels(g.index(i, j));
+      if (a < 0) continue;
+      for (const auto& [di, dj] : {std::pair<int, int>{1, 0}, {0, 1}, {-1, 0}, {0, -1}}) {
+        const int ii = i + di, jj = j + dj;
+        if (ii < 0 || jj < 0 || ii >= g.nx || jj >= g.ny) continue;
+        const int n = g.index(ii, jj);
+        if (!field.inside(n)) {
+          contact[a] = 1;
+          continue;
+        }
+        const int b = out.labels(n);
+        if (b > a) collisions.push_back({a, b});
+      }
+    }
+  std::sort(collisions.begin(), collisions.end());
+  collisions.erase(std::unique(collisions.begin(), collisions.end()), collisions.end());
+  out.collisions = std::move(collisions);
+  for (int s = 0; s < S; ++s)
+    if (contact[s] && field.has_domain()) out.boundary_contacts.push_back(s);
+  return out;
+}
+
+}  // namespace homesh

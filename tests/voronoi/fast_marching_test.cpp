@@ -1,0 +1,210 @@
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "core/error.h"
+#include "voronoi/lattice_stencil.h"
+#include "voronoi/voronoi_delaunay.h"
+#include "voronoi/voronoi_engines.h"
+#include "voronoi_test_support.h"
+
+using namespace homesh;
+
+namespace {
+
+VoronoiProblem unit_square(int n, const Eigen::Matrix2Xd& seeds, const Eigen::Matrix2d& M) {
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, n, n);
+  p.seeds = seeds;
+  p.metric = MetricField::constant(M);
+  return p;
+}
+
+// Mislabelled nodes against the exact Voronoi diagram of the metric distance
+// |x - p|_M: their fraction, and the largest Euclidean distance, in cells, of
+// one to the bisector of its exact seed and its label.
+struct LabelErrors {
+  double fraction = 0.0;
+  double worst_cells = 0.0;
+};
+
+LabelErrors label_errors(const CartesianGrid& g, const Eigen::VectorXi& labels,
+                         const Eigen::Matrix2Xd& seeds, const Eigen::Matrix2d& M) {
+  LabelErrors out;
+  int wrong = 0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const Eigen::Vector2d x = g.point(i, j);
+      int s = 0;
+      double best = 1e300;
+      for (int q = 0; q < seeds.cols(); ++q) {
+        const Eigen::Vector2d v = x - seeds.col(q);
+        if (v.dot(M * v) < best) best = v.dot(M * v), s = q;
+      }
+      const int k = labels(g.index(i, j));
+      if (k == s) continue;
+      ++wrong;
+      const Eigen::Vector2d ps = seeds.col(s), pk = seeds.col(k);
+      const Eigen::Vector2d n = M * (pk - ps);
+      const double c = (pk.dot(M * pk) - ps.dot(M * ps)) / 2;
+      out.worst_cells = std::max(out.worst_cells, std::abs(n.dot(x) - c) / n.norm() / g.ds());
+    }
+  out.fraction = static_cast<double>(wrong) / g.node_count();
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the lattice stencil is an M-obtuse superbase at any anisotropy", "[voronoi][fmm]") {
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> angle(0.0, M_PI), aspect(0.0, 3.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double ratio = std::pow(10.0, aspect(gen));
+    const Eigen::Matrix2d M = metric_from_axes(angle(gen), 1.0, 1.0 / ratio);
+    const LatticeStencil st = lattice_stencil(M, 0.01, 0.02);
+    for (int k = 0; k < 6; ++k) {
+      const Eigen::Vector2i u = st.offset[k], v = st.offset[(k + 1) % 6];
+      // Unimodular counter-clockwise sectors with M-acute angles.
+      CHECK(u.x() * v.y() - u.y() * v.x() == 1);
+      CHECK(st.vec[k].dot(M * st.vec[(k + 1) % 6]) >= -1e-12 * st.length[k] * st.length[k]);
+    }
+    CHECK((st.offset[0] + st.offset[2] + st.offset[4]).isZero());
+  }
+}
+
+TEST_CASE("the Hopf-Lax sector update is exact for a plane wave", "[voronoi][fmm]") {
+  // T(x) = g . x with |g|_{M^-1} = 1 is a metric distance to a line; the
+  // update from the sector holding the characteristic -M^-1 g returns it.
+  const Eigen::Matrix2d M = metric_from_axes(0.4, 1.0, 0.1);
+  const LatticeStencil st = lattice_stencil(M, 0.01, 0.01);
+  int exact = 0;
+  for (int m = 0; m < 64; ++m) {
+    const Eigen::Vector2d dir(std::cos(m * M_PI / 32), std::sin(m * M_PI / 32));
+    const Eigen::Vector2d g = dir / std::sqrt(dir.dot(M.inverse() * dir));
+    for (int k = 0; k < 6; ++k) {
+      const double a = g.dot(st.vec[k]), b = g.dot(st.vec[(k + 1) % 6]);
+      const double t = hopf_lax(st.sector[k], a, b);
+      // Characteristic in the sector: the update must find T(x) = 0.
+      const Eigen::Vector2d c = -(M.inverse() * g);
+      Eigen::Matrix2d B;
+      B << st.vec[k], st.vec[(k + 1) % 6];
+      const Eigen::Vector2d w = B.inverse() * c;
+      if (w.minCoeff() > 1e-9) {
+        CHECK(t == Approx(0.0).margin(1e-12));
+        ++exact;
+      } else {
+        CHECK(t >= -1e-12);  // never below the exact value
+      }
+    }
+  }
+  CHECK(exact >= 64);
+}
+
+TEST_CASE("fast marching labels match the exact metric Voronoi diagram at anisotropy 1, 10, 100",
+          "[voronoi][fmm]") {
+  const int n = 301;
+  const Eigen::Matrix2Xd seeds = test::uniform_seeds(20, 3, 0.05, 0.95);
+  for (const double ratio : {1.0, 10.0, 100.0}) {
+    INFO("anisotropy 1:" << ratio);
+    const Eigen::Matrix2d M = metric_from_axes(0.5, 1.0, 1.0 / ratio);
+    const VoronoiProblem p = unit_square(n, seeds, M);
+    const CrystalPartition r = grow_crystals(p, "fast_marching");
+    CHECK(r.settled);
+    CHECK(r.uncovered == 0);
+    const LabelErrors e = label_errors(p.grid, r.labels, seeds, M);
+    CHECK(e.fraction < 0.001);
+    CHECK(e.worst_cells <= 0.5);
+  }
+}
+
+TEST_CASE("fast marching duals are the exact metric Delaunay triangulations", "[voronoi][fmm]") {
+  // Seeds in general position (no four within 2 cells of cocircular in the
+  // metric, no Voronoi vertex within 8 cells of the border): the dual must be
+  // the Delaunay triangulation of the seeds mapped by L^T, M = L L^T. At
+  // 1:100 the regions in a square are strips crossing it, a few cells wide: a
+  // finer grid, and the sets that have a Voronoi vertex in the square.
+  for (const auto& [ratio, n] : {std::pair<double, int>{1.0, 301}, {10.0, 301}, {100.0, 1001}}) {
+    INFO("anisotropy 1:" << ratio);
+    const Eigen::Matrix2d M = metric_from_axes(-0.3, 1.0, 1.0 / ratio);
+    const Eigen::Matrix2d Lt = M.llt().matrixL().transpose();
+    int tested = 0;
+    for (const Eigen::Matrix2Xd& seeds : test::general_seed_sets(4, 25, 1.0 / (n - 1), M)) {
+      const auto expected = test::delaunay_in_box(seeds, 0.0, 1.0, Lt).triangles;
+      if (expected.empty() || tested == 2) continue;
+      ++tested;
+      const VoronoiDelaunay v = voronoi_delaunay(unit_square(n, seeds, M), "fast_marching");
+      CHECK(v.check.ok());
+      CHECK(test::rotated(v.dual.triangles) == expected);
+      // Orphans: slivers of a region thinner than a cell where it meets the
+      // border, cut into pieces by the grid (the exact labels do the same).
+      for (const int o : v.regions.orphans) CHECK(v.regions.regions[o].nodes <= 10);
+    }
+    CHECK(tested == 2);
+  }
+}
+
+TEST_CASE("fast marching in a disc and an annulus: geodesic regions, valid duals",
+          "[voronoi][fmm]") {
+  const int n = 201;
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({-1, -1}, {1, 1}, n, n);
+  const int K = 16;
+  p.seeds.resize(2, 2 * K);
+  for (int k = 0; k < K; ++k) {
+    const double a = 2 * M_PI * k / K, b = 2 * M_PI * (k + 0.5) / K;
+    p.seeds.col(k) = 0.45 * Eigen::Vector2d(std::cos(a), std::sin(a));
+    p.seeds.col(K + k) = 0.75 * Eigen::Vector2d(std::cos(b), std::sin(b));
+  }
+  SECTION("annulus") {
+    p.domain = sample_on_grid(
+        p.grid, [](const Eigen::Vector2d& x) { return std::abs(x.norm() - 0.6) - 0.3; });
+    const VoronoiDelaunay v = voronoi_delaunay(p, "fast_marching");
+    CHECK(v.valid());
+    CHECK(v.regions.domain_euler == 0);
+    CHECK(v.dual.triangles.size() == 2 * K);
+    // No node outside is labelled; every seed's region reaches the boundary.
+    for (int k = 0; k < p.grid.node_count(); ++k)
+      if (p.domain(k) > 0) REQUIRE(v.partition.labels(k) == -1);
+    CHECK(v.partition.boundary_contacts.size() == 2 * K);
+  }
+  SECTION("a wall: crystals do not see through it") {
+    // The disc of radius 0.9 cut by a wall 4 cells thick along x = 0 from the
+    // bottom up to y = 0.5: seeds either side of the wall meet only above it.
+    p.seeds.resize(2, 2);
+    p.seeds << -0.2, 0.2,  //
+        -0.5, -0.5;
+    p.domain = sample_on_grid(p.grid, [](const Eigen::Vector2d& x) {
+      const double wall = std::max(std::abs(x.x()) - 0.02, x.y() - 0.5);  // < 0 in it
+      return std::max(x.norm() - 0.9, -wall);
+    });
+    const CrystalPartition r = grow_crystals(p, "fast_marching");
+    // Below the wall's top, the side decides the label: the geodesic round
+    // the wall is longer than the straight path through it.
+    int crossed = 0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d x = p.grid.point(i, j);
+        const int l = r.labels(p.grid.index(i, j));
+        if (l >= 0 && x.y() < 0.3) crossed += (x.x() < 0) != (l == 0);
+      }
+    CHECK(crossed == 0);
+    CHECK(r.collisions == std::vector<std::array<int, 2>>{{0, 1}});
+  }
+}
+
+TEST_CASE("fast marching refuses what it cannot do", "[voronoi][fmm]") {
+  VoronoiProblem p =
+      unit_square(21, test::uniform_seeds(3, 1, 0.1, 0.9), Eigen::Matrix2d::Identity());
+  p.contact = Contact::wet;
+  CHECK_THROWS_WITH(grow_crystals(p, "fast_marching"), Catch::Contains("dry"));
+  p.contact = Contact::dry;
+  p.seeds(0, 1) = 1.5;
+  CHECK_THROWS_WITH(grow_crystals(p, "fast_marching"),
+                    Catch::Contains("seed 1 lies outside the grid"));
+  p.seeds(0, 1) = 0.5;
+  p.domain = sample_on_grid(p.grid, [](const Eigen::Vector2d& x) { return x.x() - 0.3; });
+  CHECK_THROWS_WITH(grow_crystals(p, "fast_marching"), Catch::Contains("lies outside the domain"));
+  CHECK_THROWS_WITH(voronoi_engine("fast"), Catch::Contains("fast_marching"));
+}
