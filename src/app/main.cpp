@@ -79,8 +79,6 @@ int run(int argc, char** argv) {
   std::vector<homesh::StageCall> calls;
   for (const auto& m : modules) calls.push_back(homesh::parse_stage_call(m));
 
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
   gmsh::initialize(0, nullptr, false);
   gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
   homesh::Context ctx;
@@ -98,6 +96,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
   try {
     return run(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -116,10 +116,10 @@ ElasticityCoefficients metric_ideal(const Mesh& m, const Mesh& initial, const Fo
   return metric(m, initial, p, true);
 }
 
-// Case 8: E = (min Q17 / max Q17)^-1, no added terms.
+// Case 8: E = (min Q17 / max Q17)^-power (power 1 in the thesis), no added terms.
 ElasticityCoefficients stiff_q17(const Mesh& m, const Mesh&, const FormulationParams& p) {
   ElasticityCoefficients c = base(p);
-  c.young = per_element(inverse_ratio(element_distortion(m).q17_ratio));
+  c.young = per_element(inverse_ratio(element_distortion(m).q17_ratio).array().pow(p.power).matrix());
   return c;
 }
 
@@ -136,10 +136,16 @@ const std::vector<AnalogyFormulation>& analogy_formulations() {
        metric_ref},
       {"metric_ideal", "case 7: E = 1, sigma_t ~ R^T Lambda R of the ideal->physical map",
        metric_ideal},
-      {"stiff_q17", "case 8: E = (min Q17/max Q17)^-1, no added terms", stiff_q17},
+      {"stiff_q17", "case 8: E = (min Q17/max Q17)^-power (thesis: power 1), no added terms", stiff_q17},
       {"heat_area", "Section 4.4.2: E = 1, T = 1/Ae", heat_area},
   };
   return table;
+}
+
+std::string analogy_formulation_names() {
+  std::string names;
+  for (const auto& f : analogy_formulations()) names += (names.empty() ? "" : " | ") + f.name;
+  return names;
 }
 
 const AnalogyFormulation& analogy_formulation(const std::string& name) {

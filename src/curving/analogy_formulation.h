@@ -21,6 +21,10 @@ namespace homesh {
 struct FormulationParams {
   double poisson = 0.4;  ///< nu
   double heat = 1.0;     ///< scale of the added terms (body force, heat), see above
+  /// Exponent of the stiffening E = (min Q17 / max Q17)^-power of stiff_q17
+  /// (thesis case 8: power 1; higher powers stiffen distorted elements harder,
+  /// a homesh extension measured by scripts/rotation_benchmark.py).
+  double power = 1.0;
   AssemblyOptions assembly;  ///< must match the assembly that uses the coefficients
 };
 
@@ -37,6 +41,9 @@ struct AnalogyFormulation {
 /// metric_ideal, stiff_q17 (Table 4.9 cases 1-8) and heat_area (T = 1/Ae,
 /// Section 4.4.2).
 const std::vector<AnalogyFormulation>& analogy_formulations();
+
+/// The names of all formulations joined by " | ", for option help texts.
+std::string analogy_formulation_names();
 
 /// The formulation called `name`; homesh::Error listing the names if none.
 const AnalogyFormulation& analogy_formulation(const std::string& name);

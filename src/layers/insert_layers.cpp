@@ -121,7 +121,7 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
     const int b = std::max(room.bottleneck, 0);
     throw Error("layers: cannot open a room " + number_text(d[n]) + " thick for " +
                 std::to_string(n) + " layers: the elastic push (" + opt.room.formulation + ", nu = " +
-                number_text(opt.room.poisson) + ") keeps every element valid only up to " +
+                number_text(opt.room.params.poisson) + ") keeps every element valid only up to " +
                 number_text(100 * room.reached) + " % of it (" + std::to_string(room.steps) +
                 " steps), tightest at the wall node " +
                 point_text(m.x.col(r.lines[b].wall_node)) + " on curve " +

@@ -49,8 +49,7 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
   std::vector<std::vector<int>> around = node_triangles(m);
 
   const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
-  FormulationParams params;
-  params.poisson = opt.poisson;
+  const FormulationParams& params = opt.params;
   ElasticityOptions eo;
   eo.assembly = params.assembly;
   eo.solver = opt.solver;

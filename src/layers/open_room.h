@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "curving/analogy_formulation.h"
 #include "fem/linear_solver.h"
 
 namespace homesh {
@@ -28,7 +29,7 @@ struct RoomOptions {
   /// Formulation of curving/analogy_formulation.h, re-evaluated on the current
   /// mesh at every step; "plain" (E = 1, no added terms) is the thesis' choice.
   std::string formulation = "plain";
-  double poisson = 0.4;  ///< nu of the analogy
+  FormulationParams params;  ///< nu, added-term scale and power of the analogy
   double cap = 1;        ///< fraction of min(delta_i) a node may move per step, in (0, 1]
   int max_steps = 200;   ///< accepted steps before giving up
   int max_halvings = 8;  ///< halvings of a failing step before giving up

@@ -5,18 +5,12 @@
 #include "core/error.h"
 #include "core/raise_order.h"
 #include "curving/deform_mesh.h"
-#include "fem/linear_solver.h"
+#include "pipeline/analogy_options.h"
 #include "gmsh/cad_boundary.h"
 #include "gmsh/gmsh_call.h"
 
 namespace homesh {
 namespace {
-
-std::string formulation_names() {
-  std::string names;
-  for (const auto& f : analogy_formulations()) names += (names.empty() ? "" : " | ") + f.name;
-  return names;
-}
 
 void run(Context& ctx, const Options& opt) {
   Mesh& m = ctx.require_mesh("curve");
@@ -24,14 +18,12 @@ void run(Context& ctx, const Options& opt) {
     throw Error("stage 'curve': " + ctx.input +
                 " has no CAD curves to curve onto (give the .geo/.step/.brep)");
   const int p = opt.get_int("p", 2, kMaxOrder);
+  const AnalogyChoice analogy = read_analogy_options(opt, "curve");
   DeformOptions d;
-  d.formulation = analogy_formulation(opt.get_string("formulation")).name;
-  d.params.poisson = opt.get_double("nu");
-  if (!(d.params.poisson > -1 && d.params.poisson < 0.5))
-    throw Error("stage 'curve': option nu must be in (-1, 0.5)");
-  d.params.heat = opt.get_double("heat");
+  d.formulation = analogy.formulation;
+  d.params = analogy.params;
+  d.solver = analogy.solver;
   d.increments = opt.get_int("increments", 1, 1000);
-  d.solver.method = opt.get_string("solver");
 
   Mesh raised = raise_order(m, p);
   Eigen::Matrix2Xd target;
@@ -53,15 +45,13 @@ void run(Context& ctx, const Options& opt) {
 }  // namespace
 
 Stage curve_stage() {
+  std::vector<OptionSpec> options = {
+      {"p", "2", "element order, 2 to " + std::to_string(kMaxOrder)},
+      {"increments", "4", "load increments (halved where validity needs it)"}};
+  for (auto& o : analogy_option_specs()) options.push_back(std::move(o));
   return {"curve",
           "order p with boundary nodes on the CAD, interior by the elastic analogy, valid",
-          {{"p", "2", "element order, 2 to " + std::to_string(kMaxOrder)},
-           {"formulation", "plain", formulation_names()},
-           {"nu", "0.4", "Poisson's ratio"},
-           {"heat", "1", "scale of the added force/heat terms (> 0 expands hot elements)"},
-           {"increments", "4", "load increments (halved where validity needs it)"},
-           {"solver", "ldlt", "linear solver: ldlt | cg (| cholmod)"}},
-          run};
+          options, run};
 }
 
 }  // namespace homesh

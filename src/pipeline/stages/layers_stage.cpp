@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "curving/analogy_formulation.h"
+#include "pipeline/analogy_options.h"
 #include "fem/linear_solver.h"
 #include "layers/insert_layers.h"
 #include "layers/radius_ratio.h"
@@ -29,11 +29,10 @@ void run(Context& ctx, const Options& opt) {
   o.normals.multi = normals == "multi";
   o.normals.fan = opt.get_int("fan", 3, 99);
   o.normals.fan_angle = opt.get_double("fan_angle");
-  o.room.poisson = opt.get_double("nu");
-  if (!(o.room.poisson > -1 && o.room.poisson < 0.5))
-    throw Error("stage 'layers': option nu must be in (-1, 0.5)");
-  o.room.formulation = analogy_formulation(opt.get_string("formulation")).name;
-  o.room.solver.method = opt.get_string("solver");
+  const AnalogyChoice analogy = read_analogy_options(opt, "layers");
+  o.room.formulation = analogy.formulation;
+  o.room.params = analogy.params;
+  o.room.solver = analogy.solver;
 
   const int order = m.order, nodes = m.num_nodes(), triangles = m.num_triangles();
   LayerResult r = insert_layers(m, o);
@@ -56,7 +55,7 @@ void run(Context& ctx, const Options& opt) {
                "(first {:g}, ratio {:g})", o.layers, walls, r.loops,
                r.wall_edges, r.fan_nodes, r.thickness, o.first, o.ratio);
   ctx.log.info("layers: room opened in {} elastic step(s) (formulation {}, nu {:g}); {} -> {} "
-               "triangles, {} -> {} nodes", r.push_steps, o.room.formulation, o.room.poisson,
+               "triangles, {} -> {} nodes", r.push_steps, o.room.formulation, o.room.params.poisson,
                triangles, m.num_triangles(), nodes, m.num_nodes());
   double worst = 1, sum = 0;
   int count = 0;
@@ -87,19 +86,18 @@ void run(Context& ctx, const Options& opt) {
 }  // namespace
 
 Stage layers_stage() {
+  std::vector<OptionSpec> options = {
+      {"walls", "", "curve physical groups or tags the layers grow from, comma-separated"},
+      {"n", "3", "number of layers"},
+      {"first", "1e-3", "thickness of the layer at the wall"},
+      {"ratio", "1.2", "thickness ratio of consecutive layers"},
+      {"normals", "single", "single | multi (fans of normals at sharp wall nodes)"},
+      {"fan", "5", "normals per fan (odd, >= 3)"},
+      {"fan_angle", "330", "domain angle (deg) from which a wall node gets a fan"}};
+  for (auto& o : analogy_option_specs()) options.push_back(std::move(o));
   return {"layers",
           "boundary layers on walls: room opened by the elastic analogy, geometric layers",
-          {{"walls", "", "curve physical groups or tags the layers grow from, comma-separated"},
-           {"n", "3", "number of layers"},
-           {"first", "1e-3", "thickness of the layer at the wall"},
-           {"ratio", "1.2", "thickness ratio of consecutive layers"},
-           {"normals", "single", "single | multi (fans of normals at sharp wall nodes)"},
-           {"fan", "5", "normals per fan (odd, >= 3)"},
-           {"fan_angle", "330", "domain angle (deg) from which a wall node gets a fan"},
-           {"formulation", "plain", "elastic analogy of the push (plain: E = 1, the thesis')"},
-           {"nu", "0.4", "Poisson's ratio of the elastic push"},
-           {"solver", "ldlt", "linear solver: ldlt | cg (| cholmod)"}},
-          run};
+          options, run};
 }
 
 }  // namespace homesh

@@ -1,5 +1,7 @@
 #include "pipeline/stages/rotate_stage.h"
 
+#include "pipeline/analogy_options.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -12,12 +14,6 @@
 
 namespace homesh {
 namespace {
-
-std::string formulation_names() {
-  std::string names;
-  for (const auto& f : analogy_formulations()) names += (names.empty() ? "" : " | ") + f.name;
-  return names;
-}
 
 // wall[i] = node i lies on a line of the physical curve groups called `names`.
 std::vector<bool> wall_nodes(const Mesh& m, const std::vector<std::string>& names) {
@@ -86,13 +82,10 @@ void run(Context& ctx, const Options& opt) {
   if (pose != "current" && pose != "initial")
     throw Error("stage 'rotate': option pose=" + pose + ": expected current or initial");
   r.total = pose == "initial";
-  r.formulation = analogy_formulation(opt.get_string("formulation")).name;
-  r.params.poisson = opt.get_double("nu");
-  if (!(r.params.poisson > -1 && r.params.poisson < 0.5))
-    throw Error("stage 'rotate': option nu must be in (-1, 0.5)");
-  r.params.heat = opt.get_double("heat");
-  r.solver.method = opt.get_string("solver");
-  r.solver.preconditioner = opt.get_string("preconditioner");
+  const AnalogyChoice analogy = read_analogy_options(opt, "rotate");
+  r.formulation = analogy.formulation;
+  r.params = analogy.params;
+  r.solver = analogy.solver;
 
   const RotateResult res = rotate_boundary(m, wall, boundary_nodes(m), r);
   m = res.mesh;
@@ -123,29 +116,20 @@ void run(Context& ctx, const Options& opt) {
                                              res.invalid_at_failure));
 }
 
-std::string preconditioners() {
-  std::string names;
-  for (const auto& p : preconditioner_names()) names += (names.empty() ? "" : " | ") + p;
-  return names;
-}
-
 }  // namespace
 
 Stage rotate_stage() {
+  std::vector<OptionSpec> options = {
+      {"wall", "hole", "physical curve group(s) to rotate, comma-separated"},
+      {"centre", "auto", "x,y, or auto: centre of the circle fitted to the wall's nodes"},
+      {"step", "1", "angle step, degrees (negative: clockwise)"},
+      {"max", "360", "largest angle tried, degrees"},
+      {"substeps", "1", "solves per step (pose=current)"},
+      {"pose", "current", "pose each step on the current mesh (thesis) or the initial one"}};
+  for (auto& o : analogy_option_specs()) options.push_back(std::move(o));
   return {"rotate",
           "turn a wall step by step (elastic analogy) until an element would become invalid",
-          {{"wall", "hole", "physical curve group(s) to rotate, comma-separated"},
-           {"centre", "auto", "x,y, or auto: centre of the circle fitted to the wall's nodes"},
-           {"step", "1", "angle step, degrees (negative: clockwise)"},
-           {"max", "360", "largest angle tried, degrees"},
-           {"substeps", "1", "solves per step (pose=current)"},
-           {"pose", "current", "pose each step on the current mesh (thesis) or the initial one"},
-           {"formulation", "plain", formulation_names()},
-           {"nu", "0.4", "Poisson's ratio"},
-           {"heat", "1", "scale of the added force/heat terms (> 0 expands hot elements)"},
-           {"solver", "ldlt", "linear solver: ldlt | cg (| cholmod)"},
-           {"preconditioner", "ichol", "CG preconditioner: " + preconditioners()}},
-          run};
+          options, run};
 }
 
 }  // namespace homesh
