@@ -2,6 +2,8 @@
 // Validity checks of a dual triangulation (dual_triangulation.h) against the
 // regions it came from (region_analysis.h).
 #include <Eigen/Core>
+#include <array>
+#include <vector>
 
 #include "voronoi/dual_triangulation.h"
 #include "voronoi/region_analysis.h"
@@ -22,6 +24,11 @@ struct DualCheck {
   /// Triangles whose seeds do not turn counter-clockwise in the order of their
   /// regions round the Voronoi vertex (exact orient2d <= 0).
   int inverted = 0;
+  /// Indices into dual.triangles of the triangles at fault: inverted, or
+  /// holding a bad interior or boundary edge; sorted.
+  std::vector<int> bad_triangles;
+  /// Interior edges in no triangle: nothing marks where they fail.
+  std::vector<std::array<int, 2>> lone_edges;
 
   bool ok() const {
     return euler == expected_euler && bad_interior_edges == 0 && bad_boundary_edges == 0 &&

@@ -36,6 +36,13 @@ struct DualTriangulation {
   /// Seed triples in the counter-clockwise order of their regions round the
   /// Voronoi vertex, sorted.
   std::vector<std::array<int, 3>> triangles;
+  /// The Voronoi vertex of each triangle: the mean centre of the grid cells
+  /// that showed its triple (2 by #triangles).
+  Eigen::Matrix2Xd vertices;
+  /// Where the label image shows a triple point that gives no triangle
+  /// (unjoined seeds) or gives one in both orders (orientation conflict): the
+  /// mean centre of its cells (2 by #defects).
+  Eigen::Matrix2Xd defects;
   int triple_cells = 0;  ///< cells with 3 distinct labels
   int quad_cells = 0;    ///< cells with 4 distinct labels
   /// Cells with labels a, b, a, c round them (two corners of one region

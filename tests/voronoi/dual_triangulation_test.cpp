@@ -1,5 +1,6 @@
 #include "voronoi/dual_triangulation.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -47,7 +48,18 @@ TEST_CASE("the dual of exact Voronoi labels is CGAL's Delaunay triangulation", "
     CHECK(test::rotated(dual.triangles) == expected.triangles);
     CHECK(dual.unjoined_triples == 0);
     CHECK(dual.orientation_conflicts == 0);
+    CHECK(dual.defects.cols() == 0);
+    // Each triangle's Voronoi vertex is read within a cell of its circumcentre.
+    REQUIRE(dual.vertices.cols() == static_cast<int>(dual.triangles.size()));
+    for (std::size_t f = 0; f < dual.triangles.size(); ++f) {
+      const auto& t = dual.triangles[f];
+      const Eigen::Vector2d c =
+          test::circumcentre(seeds.col(t[0]), seeds.col(t[1]), seeds.col(t[2]));
+      CHECK((dual.vertices.col(f) - c).norm() < ds);
+    }
     const DualCheck check = check_dual(seeds, dual, regions);
+    CHECK(check.bad_triangles.empty());
+    CHECK(check.lone_edges.empty());
     CHECK(check.ok());
     CHECK(check.euler == 1);
     CHECK(check.inverted == 0);
@@ -119,12 +131,21 @@ TEST_CASE("check_dual finds missing and inverted triangles", "[voronoi][dual]") 
   CHECK_FALSE(m.ok());
   CHECK(m.euler == 0);
   CHECK(m.bad_interior_edges == 2);
+  // The two triangles sharing the now-lonely edges are at fault.
+  CHECK(m.bad_triangles.size() == 2);
+  CHECK(m.lone_edges.empty());
 
   DualTriangulation flipped = dual;
   std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
   const DualCheck f = check_dual(seeds, flipped, regions);
   CHECK(f.inverted == 1);
   CHECK_FALSE(f.ok());
+  CHECK(std::count(f.bad_triangles.begin(), f.bad_triangles.end(), 0) == 1);
+
+  DualTriangulation none = dual;
+  none.triangles.clear();
+  const DualCheck z = check_dual(seeds, none, regions);
+  CHECK(z.lone_edges.size() == 4);  // the spokes from the centre seed
 }
 
 TEST_CASE("analyse_regions: orphans, isolated regions, domain topology", "[voronoi][regions]") {
