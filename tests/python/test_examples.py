@@ -1,0 +1,74 @@
+"""The worked scripts of scripts/examples/ run and print a certified-valid mesh."""
+import os
+import re
+import subprocess
+import sys
+
+import homesh
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+EXAMPLES = os.path.join(ROOT, "scripts", "examples")
+
+
+def run(script, *args):
+    """Runs an example with this interpreter and PYTHONPATH; returns its standard output."""
+    result = subprocess.run([sys.executable, os.path.join(EXAMPLES, script), *args],
+                            capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stdout + result.stderr
+    return result.stdout
+
+
+def validity(log):
+    """(invalid, triangles) from the quality stage's validity line."""
+    m = re.search(r"validity: (\d+) invalid of (\d+) triangles", log)
+    assert m, log
+    return int(m.group(1)), int(m.group(2))
+
+
+def views(msh):
+    return re.findall(r'^\$Element(?:Node)?Data\n\d+\n"([^"]+)"', msh.read_text(), re.M)
+
+
+def test_plate_hole_curves_the_hole_onto_the_circle(tmp_path):
+    msh = tmp_path / "plate.msh"
+    log = run("plate_hole.py", "--msh", str(msh))
+    # Same sizes as geo/plate_hole.geo: 344 triangles, all certified valid at order 4.
+    assert validity(log) == (0, 344)
+    m = re.search(r"straight-sided error (\S+), curved error (\S+)", log)
+    straight, curved = float(m.group(1)), float(m.group(2))
+    # 32 chords on a circle of radius 0.5 miss 0.5^2 (pi - 16 sin(pi/16)) = 5.04e-3 of area.
+    assert abs(straight - 5.04e-3) < 0.01e-3
+    assert abs(curved) < 1e-8
+    assert {"minJ/maxJ", "Q4", "Q17"} <= set(views(msh))
+    assert (tmp_path / "plate.msh.opt").exists()
+
+
+def test_naca7526_boundary_layers_curved_to_order_4(tmp_path):
+    msh = tmp_path / "naca.msh"
+    log = run("naca7526.py", "--msh", str(msh))
+    invalid, triangles = validity(log)
+    assert invalid == 0
+    assert "physical curve 1 \"aerofoil\"" in log and "order 4:" in log
+    if "layers" in [s["name"] for s in homesh.stages()]:
+        assert "15 layers on aerofoil (1 loop(s), 121 wall edges, 1 fans)" in log
+        # 15 layers of 2 triangles on each of the 121 wall edges, and more at the fan.
+        assert triangles > 2747 + 2 * 15 * 121
+    else:
+        assert "no 'layers' stage" in log and triangles == 2747
+    assert "Q4" in views(msh)
+
+
+def test_gen_reference_lists_every_stage_and_measure():
+    script = os.path.join(ROOT, "scripts", "gen_reference.py")
+    out = subprocess.run([sys.executable, script], capture_output=True, text=True,
+                         check=True).stdout
+    for s in homesh.stages():
+        assert f"| `{s['name']}` | {s['summary']} |" in out
+        for option in s["options"]:
+            assert f"| `{option}` |" in out
+    binary = os.path.join(os.path.dirname(homesh.__file__), "..", "homesh")
+    measures = subprocess.run([binary, "--measures"], capture_output=True, text=True,
+                              check=True).stdout
+    ids = re.findall(r"^\s*(Q\d+) ", measures, re.M)
+    rows = re.findall(r"^\| (Q\d+) \|", out, re.M)
+    assert rows == ids and "Q17" in rows
