@@ -60,3 +60,16 @@ def test_errors_raise_homesh_error_with_the_cli_message(session):
         homesh.order(q=2)
     with pytest.raises(homesh.Error, match="unknown stage 'nosuch'"):
         homesh.run("nosuch")
+
+
+def test_quality_returns_its_numbers(session):
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    gmsh.model.mesh.generate(2)
+    homesh.curve(p=3)
+    r = homesh.quality(measures="Q4,Q11")
+    res = r["results"]
+    assert res["triangles"] == r["triangles"] and res["invalid"] == 0
+    assert 0.9 < res["worst_minJ_maxJ"] <= 1.0
+    assert 1 <= res["worst_triangle"] <= r["triangles"]
+    assert 0 < res["Q11_min"] <= res["Q11_mean"] <= 1
+    assert len(r["views"]) == 5

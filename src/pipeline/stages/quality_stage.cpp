@@ -30,6 +30,10 @@ void run(Context& ctx, const Options& opt) {
   const MeshValidity v = mesh_validity(m, bounds);
   const auto t1 = std::chrono::steady_clock::now();
   ctx.set_field({"minJ/maxJ", Field::Kind::Element, v.ratio.transpose()});
+  ctx.results = {{"triangles", m.num_triangles()},
+                 {"invalid", v.invalid},
+                 {"worst_minJ_maxJ", v.worst},
+                 {"worst_triangle", v.worst_element + 1}};
   std::vector<std::string> histograms = {histogram_line("minJ/maxJ", v.ratio)};
   const std::vector<MeshMeasure> results =
       mesh_measures(m, chosen, lattice > 0 ? lattice : default_lattice_order(m.order), ref);
@@ -38,6 +42,8 @@ void run(Context& ctx, const Options& opt) {
     ctx.set_field({name + " min", Field::Kind::Element, results[j].element_min.transpose()});
     ctx.set_field({name, Field::Kind::ElementNode, results[j].node_values});
     histograms.push_back(histogram_line(name, results[j].element_min));
+    ctx.results[name + "_min"] = results[j].element_min.minCoeff();
+    ctx.results[name + "_mean"] = results[j].element_min.mean();
   }
   const auto t2 = std::chrono::steady_clock::now();
   const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
