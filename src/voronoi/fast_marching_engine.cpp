@@ -4,9 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +35,45 @@ struct Entry {
   /// Stencil steps from the crystal's own region (0 inside it): the smallest
   /// over the accepted entries that updated this one, plus 1.
   std::uint8_t hop = 255;
+};
+
+// A 4-ary min-heap of (time, entry): half the depth of a binary heap, and
+// the four children of a node share a cache line.
+class TimeHeap {
+ public:
+  using Item = std::pair<double, int>;
+  bool empty() const { return items_.empty(); }
+  const Item& top() const { return items_.front(); }
+  void push(const Item& item) {
+    std::size_t k = items_.size();
+    items_.push_back(item);
+    while (k > 0 && item.first < items_[(k - 1) / 4].first) {
+      items_[k] = items_[(k - 1) / 4];
+      k = (k - 1) / 4;
+    }
+    items_[k] = item;
+  }
+  void pop() {
+    const Item last = items_.back();
+    items_.pop_back();
+    if (items_.empty()) return;
+    std::size_t k = 0;
+    for (;;) {
+      const std::size_t first = 4 * k + 1;
+      if (first >= items_.size()) break;
+      std::size_t best = first;
+      const std::size_t end = std::min(first + 4, items_.size());
+      for (std::size_t c = first + 1; c < end; ++c)
+        if (items_[c].first < items_[best].first) best = c;
+      if (!(items_[best].first < last.first)) break;
+      items_[k] = items_[best];
+      k = best;
+    }
+    items_[k] = last;
+  }
+
+ private:
+  std::vector<Item> items_;
 };
 
 class Sweep {
@@ -85,6 +122,7 @@ class Sweep {
       const auto [t, e] = heap_.top();
       if (t > stop || (max_steps > 0 && steps_ >= max_steps)) return false;
       heap_.pop();
+
       Entry& en = entries_[e];
       if (en.accepted || en.time != t) continue;
       en.accepted = 1;
@@ -205,11 +243,11 @@ class Sweep {
     const int s = entries_[e].label, y = entries_[e].node;
     const double a = entries_[e].time;
     const int hop = entries_[e].hop + 1;
-    field_.for_each_reverse(s, y, [&](int x, int k, double euclid) {
+    field_.for_each_reverse(s, y, [&](int x, int k) {
       if (!field_.inside(x)) return;
       const int w = nodes_[x].winner_label;
       if (w >= 0 && (w == s || hop > kOwnTimeBand)) return;
-      if (!field_.passable(x, y, euclid)) return;
+      if (field_.has_domain() && !field_.passable(x, y, field_.euclid(s, x, k))) return;
       const int target = find_or_add(x, s);
       if (entries_[target].accepted) return;
       const StencilField::Local l = field_.local(s, x, k);
@@ -248,9 +286,7 @@ class Sweep {
     int winner_label = -1;
   };
   std::vector<NodeState> nodes_;
-  std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>,
-                      std::greater<std::pair<double, int>>>
-      heap_;
+  TimeHeap heap_;
   long steps_ = 0;
 };
 

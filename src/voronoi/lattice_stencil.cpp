@@ -29,11 +29,6 @@ Superbase obtuse_superbase(const Eigen::Matrix2d& G) {
   return {b1, b2};
 }
 
-Eigen::Vector2i hexagon_offset(const Superbase& b, int k) {
-  static const int c1[6] = {1, 1, 0, -1, -1, 0}, c2[6] = {0, 1, 1, 0, -1, -1};
-  return c1[k] * b.e1 + c2[k] * b.e2;
-}
-
 SectorConstants sector_constants(const Eigen::Matrix2d& M, const Eigen::Vector2d& U,
                                  const Eigen::Vector2d& V) {
   const Eigen::Vector2d W = V - U;

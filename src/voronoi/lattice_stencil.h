@@ -33,7 +33,10 @@ struct Superbase {
 Superbase obtuse_superbase(const Eigen::Matrix2d& G);
 
 /// Offset k (0..5, counter-clockwise) of the hexagon of superbase b.
-Eigen::Vector2i hexagon_offset(const Superbase& b, int k);
+inline Eigen::Vector2i hexagon_offset(const Superbase& b, int k) {
+  static constexpr int c1[6] = {1, 1, 0, -1, -1, 0}, c2[6] = {0, 1, 1, 0, -1, -1};
+  return c1[k] * b.e1 + c2[k] * b.e2;
+}
 
 /// What the update needs of the sector between hexagon offsets k and k + 1
 /// (physical vectors U = vec[k], V = vec[k + 1], W = V - U), all in M:

@@ -39,14 +39,13 @@ StencilField::StencilField(const VoronoiProblem& problem)
     return;
   }
   const Eigen::Matrix2d scale = Eigen::Vector2d(g.dx, g.dy).asDiagonal();
-  base_.resize(n);
-  M_.resize(n);
+  node_.resize(n);
   rev_start_.assign(n + 1, 0);
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
       const int x = g.index(i, j);
-      M_[x] = metric_.metric_at(g.point(i, j));
-      base_[x] = obtuse_superbase(scale * M_[x] * scale);
+      node_[x].M = metric_.metric_at(g.point(i, j));
+      node_[x].base = obtuse_superbase(scale * node_[x].M * scale);
     }
   // Reverse stencils: count, then fill, by the node each offset reaches.
   const auto reach = [&](int x, int k) {
@@ -80,7 +79,7 @@ StencilField::Local StencilField::local(int s, int x, int k) const {
     return out;
   }
   const Eigen::Vector2d h(grid_.dx, grid_.dy);
-  const Eigen::Matrix2d& M = M_[x];
+  const Eigen::Matrix2d& M = node_[x].M;
   out.prev = offset(x, kp);
   out.next = offset(x, kn);
   const Eigen::Vector2d U = offset(x, k).cast<double>().cwiseProduct(h);

@@ -41,23 +41,26 @@ class StencilField {
   };
   Local local(int s, int x, int k) const;
 
-  /// Calls f(x, k, euclid) for every node x whose stencil (for crystal s) has
-  /// y at its hexagon offset k; euclid is the Euclidean length of that offset.
+  /// Calls f(x, k) for every node x whose stencil (for crystal s) has y at
+  /// its hexagon offset k.
   template <class F>
   void for_each_reverse(int s, int y, F&& f) const {
-    const int iy = y % grid_.nx, jy = y / grid_.nx;
     if (rev_start_.empty()) {
       const LatticeStencil& st = shared_[shared_.size() == 1 ? 0 : s];
+      const int iy = y % grid_.nx, jy = y / grid_.nx;
       for (int k = 0; k < 6; ++k) {
         const int i = iy - st.offset[k].x(), j = jy - st.offset[k].y();
-        if (i >= 0 && j >= 0 && i < grid_.nx && j < grid_.ny) f(grid_.index(i, j), k, st.euclid[k]);
+        if (i >= 0 && j >= 0 && i < grid_.nx && j < grid_.ny) f(grid_.index(i, j), k);
       }
       return;
     }
-    for (int r = rev_start_[y]; r < rev_start_[y + 1]; ++r) {
-      const int x = rev_[r] >> 3, k = rev_[r] & 7;
-      f(x, k, offset(x, k).cast<double>().cwiseProduct(Eigen::Vector2d(grid_.dx, grid_.dy)).norm());
-    }
+    for (int r = rev_start_[y]; r < rev_start_[y + 1]; ++r) f(rev_[r] >> 3, rev_[r] & 7);
+  }
+
+  /// Euclidean length of hexagon offset k of crystal s at node x.
+  double euclid(int s, int x, int k) const {
+    if (rev_start_.empty()) return shared_[shared_.size() == 1 ? 0 : s].euclid[k];
+    return offset(x, k).cast<double>().cwiseProduct(Eigen::Vector2d(grid_.dx, grid_.dy)).norm();
   }
 
   /// Whether the segment between nodes x and z (Euclidean length euclid)
@@ -75,12 +78,12 @@ class StencilField {
   Eigen::Matrix2d metric(int s, const Eigen::Vector2d& p) const;
   /// The metric crystal s grows in at node x.
   const Eigen::Matrix2d& node_metric(int s, int x) const {
-    if (varying()) return M_[x];
+    if (varying()) return node_[x].M;
     return seed_metrics_.empty() ? metric_.metric(0) : seed_metrics_[s];
   }
 
  private:
-  Eigen::Vector2i offset(int x, int k) const { return hexagon_offset(base_[x], k); }
+  Eigen::Vector2i offset(int x, int k) const { return hexagon_offset(node_[x].base, k); }
 
   CartesianGrid grid_;
   Eigen::VectorXd domain_;
@@ -88,10 +91,14 @@ class StencilField {
   MetricField metric_;
   std::vector<Eigen::Matrix2d> seed_metrics_;
   std::vector<LatticeStencil> shared_;  ///< one, or one per crystal
-  /// Metric field: superbase and metric at each node, reverse stencils as
-  /// x * 8 + k, CSR by the node reached.
-  std::vector<Superbase> base_;
-  std::vector<Eigen::Matrix2d> M_;
+  /// Metric field: metric and superbase at each node (side by side: one
+  /// cache line per update), reverse stencils as x * 8 + k, CSR by the node
+  /// reached.
+  struct NodeStencil {
+    Eigen::Matrix2d M;
+    Superbase base;
+  };
+  std::vector<NodeStencil> node_;
   std::vector<int> rev_start_, rev_;
 };
 

@@ -1,0 +1,132 @@
+// The voronoi stage run as a user does: a mesh of the CAD dual to the crystal
+// Voronoi diagram, valid, conforming, classified, and accepted by the other
+// stages.
+#include <gmsh.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+
+#include "../support/gmsh_session.h"
+#include "../support/run_command.h"
+#include "gmsh/read_model.h"
+
+using homesh::test::run_homesh;
+
+namespace {
+
+const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+
+// The number in the log after `label`, e.g. "... (\d+) triangles".
+int logged(const std::string& log, const std::string& pattern) {
+  std::smatch m;
+  REQUIRE(std::regex_search(log, m, std::regex(pattern)));
+  return std::stoi(m[1]);
+}
+
+homesh::Mesh read_output(const std::string& path) {
+  homesh::test::GmshSession session;
+  gmsh::open(path);
+  return homesh::gmsh_adapter::read_model(path);
+}
+
+}  // namespace
+
+TEST_CASE("voronoi: the plate with a hole, its dual conforming, then curved to order 3",
+          "[app][voronoi]") {
+  const std::string out = "/tmp/homesh_voronoi_plate.msh";
+  const auto r = run_homesh(geo + "plate_hole.geo -m voronoi -m curve:p=3 -m quality " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("check passed") != std::string::npos);
+  const int triangles = logged(r.output, R"(voronoi: surface \d+: (\d+) triangles)");
+  CHECK(logged(r.output, R"((\d+) from the fill)") == 0);
+  CHECK(r.output.find("validity: 0 invalid of " + std::to_string(triangles)) != std::string::npos);
+  const homesh::Mesh m = read_output(out);
+  CHECK(m.order == 3);
+  CHECK(m.num_triangles() == triangles);
+  // Boundary lines on the hole (r = 0.5) or the square, nodes classified on
+  // their curve; every physical group kept.
+  int on_hole = 0;
+  for (int k = 0; k < m.num_lines(); ++k) {
+    const Eigen::Vector2d a = m.x.col(m.line(0, k));
+    if (std::abs(a.norm() - 0.5) < 1e-9)
+      ++on_hole;
+    else
+      CHECK(std::abs(a.cwiseAbs().maxCoeff() - 1.0) < 1e-12);
+    CHECK(m.node_class[m.line(2, k)].dim == 1);
+  }
+  CHECK(on_hole > 20);
+  CHECK(m.physicals.size() == 3);
+  // Gmsh's default mesh has 208 nodes: the metric sizes match it roughly.
+  const int nodes = logged(r.output, R"(voronoi: metric iso[^:]*: (\d+) nodes)");
+  CHECK(nodes > 150);
+  CHECK(nodes < 260);
+  std::remove(out.c_str());
+}
+
+TEST_CASE("voronoi: NACA-7526 on a 600 x 600 grid, the strip the dual misses filled",
+          "[app][voronoi]") {
+  const std::string out = "/tmp/homesh_voronoi_naca.msh";
+  const auto r = run_homesh(geo + "naca.geo -m voronoi:grid=600 -m curve:p=3 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  // Gmsh's sizes reach 0.005 at the trailing edge, 1.2 cells here: the log
+  // says how many triangles came from the dual and how many were filled.
+  const int total = logged(r.output, R"(voronoi: surface \d+: (\d+) triangles)");
+  const int dual = logged(r.output, R"((\d+) from the dual)");
+  CHECK(dual > 0.95 * total);
+  CHECK(r.output.find("validity: 0 invalid of " + std::to_string(total)) != std::string::npos);
+  const homesh::Mesh m = read_output(out);
+  CHECK(m.num_triangles() == total);
+  CHECK(m.physicals.size() == 3);
+  std::remove(out.c_str());
+}
+
+TEST_CASE("voronoi: a boundary-layer metric stretches the triangles at the walls",
+          "[app][voronoi]") {
+  const std::string out = "/tmp/homesh_voronoi_bl.msh";
+  const auto iso = run_homesh(geo + "plate_hole.geo -m voronoi " + out);
+  const auto bl = run_homesh(geo + "plate_hole.geo -m voronoi:metric=bl " + out);
+  INFO(bl.output);
+  REQUIRE(bl.exit_code == 0);
+  CHECK(bl.output.find("walls: 1 curves not in a group 'farfield'") != std::string::npos);
+  const std::string nodes = R"(voronoi: metric [^\n]*: (\d+) nodes)";
+  CHECK(logged(bl.output, nodes) > logged(iso.output, nodes) + 30);
+  std::remove(out.c_str());
+}
+
+TEST_CASE("voronoi: seeds and metric from files, errors naming file and line", "[app][voronoi]") {
+  const std::string out = "/tmp/homesh_voronoi_files.msh";
+  const std::string seeds = "/tmp/homesh_voronoi_seeds.txt";
+  std::ofstream(seeds) << "# interior seeds\n0.75 0.75\n-0.75 0.75\n-0.75 -0.75\n0.75 -0.75\n";
+  auto r = run_homesh(geo + "plate_hole.geo -m voronoi:seeds=" + seeds + " " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("73 boundary + 4 interior seeds") != std::string::npos);
+  std::ofstream(seeds) << "0.75 0.75\n\n0.1 0.1\n";
+  r = run_homesh(geo + "plate_hole.geo -m voronoi:seeds=" + seeds + " " + out);
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find(seeds + ":3: seed (0.1, 0.1) lies outside the domain") != std::string::npos);
+  std::ofstream(seeds) << "0.75 0.75\n0.75 0.75\n";
+  r = run_homesh(geo + "plate_hole.geo -m voronoi:seeds=" + seeds + " " + out);
+  CHECK(r.output.find(seeds + ":2: seed (0.75, 0.75) coincides with the seed on line 1") !=
+        std::string::npos);
+
+  const std::string metric = "/tmp/homesh_voronoi_metric.txt";
+  std::ofstream(metric) << "grid 2 2 -1 -1 1 1\n100 0 100\n100 0 100\n100 0 100\n100 0 100\n";
+  r = run_homesh(geo + "plate_hole.geo -m voronoi:metric=" + metric + " " + out);
+  REQUIRE(r.exit_code == 0);
+  // Size 0.1 everywhere: 80 boundary lines on the square, 32 on the hole.
+  CHECK(logged(r.output, R"(voronoi: metric [^\n]*triangles, (\d+) boundary lines)") > 105);
+  std::ofstream(metric) << "grid 2 2 -1 -1 1 1\n100 0 100\n100 0 100\n1 2 1\n100 0 100\n";
+  r = run_homesh(geo + "plate_hole.geo -m voronoi:metric=" + metric + " " + out);
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find(metric + ":4: the tensor is not symmetric positive definite") !=
+        std::string::npos);
+  r = run_homesh(geo + "plate_hole.geo -m voronoi:engine=crystal " + out);
+  CHECK(r.output.find("level_set, fast_marching") != std::string::npos);
+  for (const auto& f : {out, seeds, metric}) std::remove(f.c_str());
+}
