@@ -15,12 +15,15 @@ double dot(const Eigen::Matrix2d& G, const Eigen::Vector2i& u, const Eigen::Vect
 
 Superbase obtuse_superbase(const Eigen::Matrix2d& G) {
   // Lagrange-Gauss: |b1| <= |b2| and |<b1, b2>| <= |b1|^2 / 2 at the end.
+  // Stopping as soon as the reduced b2 is not shorter than b1 also ends the
+  // loop on ties (<b1, b2> = +-|b1|^2 / 2 with |b2 - b1| = |b2|).
   Eigen::Vector2i b1(1, 0), b2(0, 1);
   for (;;) {
     if (dot(G, b1, b1) > dot(G, b2, b2)) std::swap(b1, b2);
     const long m = std::lround(dot(G, b1, b2) / dot(G, b1, b1));
     if (m == 0) break;
     b2 -= static_cast<int>(m) * b1;
+    if (dot(G, b2, b2) >= dot(G, b1, b1)) break;
   }
   // <b1, b2> <= 0 makes (b1, b2, -b1 - b2) obtuse: <b1, b3> = -|b1|^2 - <b1, b2>
   // <= 0 and <b2, b3> = -|b2|^2 - <b1, b2> <= 0 by the reduction's bounds.
