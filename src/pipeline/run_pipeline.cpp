@@ -71,8 +71,8 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
     const Stage& s = stage(c.name);
     plan.emplace_back(&s, Options(s.name, s.options, c.given));
   }
-  const bool meshes = std::any_of(calls.begin(), calls.end(),
-                                  [](const StageCall& c) { return c.name == "mesh"; });
+  const bool meshes = std::any_of(plan.begin(), plan.end(),
+                                  [](const auto& step) { return step.first->creates_mesh; });
   if (!ctx.mesh && !meshes) {
     ctx.log.info("{} has no mesh: meshing it with the mesh stage's defaults", ctx.input);
     const Stage& m = stage("mesh");

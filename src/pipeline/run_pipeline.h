@@ -16,7 +16,7 @@ namespace homesh {
 void load_input(const std::string& path, Context& ctx);
 
 /// Runs `calls` on `ctx` in order. A CAD input without a mesh is first meshed
-/// with the `mesh` stage's defaults unless some call is `mesh`.
+/// with the `mesh` stage's defaults unless some call creates a mesh itself.
 void run_stages(const std::vector<StageCall>& calls, Context& ctx);
 
 /// Certifies the validity of ctx's mesh, then writes it and ctx's fields (plus

@@ -15,6 +15,8 @@ struct Stage {
   std::string summary;
   std::vector<OptionSpec> options;
   std::function<void(Context&, const Options&)> run;
+  /// The stage makes a new mesh from the CAD (so none is needed before it).
+  bool creates_mesh = false;
 };
 
 }  // namespace homesh

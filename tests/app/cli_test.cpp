@@ -198,3 +198,16 @@ TEST_CASE("a .msh input keeps its mesh; -m mesh needs CAD", "[app]") {
     std::remove((f + ".opt").c_str());
   }
 }
+
+TEST_CASE("a CAD input is auto-meshed only when no stage creates a mesh", "[app]") {
+  auto r = run_homesh(geo + "plate_hole.geo -m info");
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("has no mesh: meshing it with the mesh stage's defaults") !=
+          std::string::npos);
+  for (const char* stage : {"mesh", "voronoi"}) {
+    r = run_homesh(geo + "plate_hole.geo -m " + stage + " -m info");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(r.output.find("has no mesh") == std::string::npos);
+  }
+}

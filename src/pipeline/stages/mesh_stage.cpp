@@ -58,7 +58,7 @@ Stage mesh_stage() {
            {"size_max", "0", "largest element size (Mesh.MeshSizeMax; 0 = Gmsh's default)"},
            {"factor", "1", "factor on all sizes (Mesh.MeshSizeFactor)"},
            {"algorithm", "frontal", "meshadapt | auto | delaunay | frontal | bamg"}},
-          run};
+          run, true};
 }
 
 }  // namespace homesh

@@ -364,7 +364,7 @@ Stage voronoi_stage() {
            {"grid", "0",
             "grid nodes along the longer side (0: the smallest size over 6 cells, "
             "200 to 1500)"}},
-          run};
+          run, true};
 }
 
 }  // namespace homesh
