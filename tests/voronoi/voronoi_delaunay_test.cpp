@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "thesis_examples.h"
 #include "voronoi_test_support.h"
 
 using namespace homesh;
@@ -59,36 +60,29 @@ TEST_CASE(
 }
 
 TEST_CASE("the five-seed example of Fig 2.2 under three metric fields", "[voronoi][delaunay]") {
-  const int n = 151;
-  Eigen::Matrix2Xd seeds(2, 5);
-  seeds << 0.5, 0.2, 0.82, 0.75, 0.28,  //
-      0.48, 0.25, 0.22, 0.8, 0.72;
-  // (a) constant isotropic, (c) constant anisotropic, (e) variable: on a 3 x 3
-  // coarse grid, ellipses turning from 0 to 90 degrees and stretching with x.
-  std::vector<Eigen::Matrix2d> variable;
-  const CartesianGrid coarse = CartesianGrid::spanning({0, 0}, {1, 1}, 3, 3);
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i)
-      variable.push_back(metric_from_axes(M_PI / 4 * (i + j) / 2, 0.3 + 0.2 * i, 0.15));
-  const std::vector<MetricField> fields{
-      MetricField::constant(Eigen::Matrix2d::Identity()),
-      MetricField::constant(metric_from_axes(M_PI / 6, 1.0, 0.35)), MetricField(coarse, variable)};
-  std::vector<std::set<std::array<int, 3>>> duals;
-  for (std::size_t f = 0; f < fields.size(); ++f) {
-    INFO("metric field " << f);
-    const VoronoiDelaunay v = voronoi_delaunay(unit_square(n, seeds, fields[f]));
-    CHECK(v.valid());
-    CHECK(v.regions.regions.size() == 5);
-    duals.push_back(test::rotated(v.dual.triangles));
-    if (f < 2) {
-      const Eigen::Matrix2d Lt = fields[f].metric(0).llt().matrixL().transpose();
-      CHECK(duals.back() == test::delaunay_in_box(seeds, 0.0, 1.0, Lt).triangles);
+  // (a) constant isotropic, (c) constant anisotropic, (e) variable
+  // (thesis_examples.h), with both engines: the same duals.
+  std::vector<std::vector<std::set<std::array<int, 3>>>> by_engine;
+  for (const std::string engine : {"level_set", "fast_marching"}) {
+    std::vector<std::set<std::array<int, 3>>>& duals = by_engine.emplace_back();
+    for (int kind = 0; kind < 3; ++kind) {
+      INFO(engine << ", metric field " << kind);
+      const VoronoiProblem p = test::five_seeds(kind, 151).problem;
+      const VoronoiDelaunay v = voronoi_delaunay(p, engine);
+      CHECK(v.valid());
+      CHECK(v.regions.regions.size() == 5);
+      duals.push_back(test::rotated(v.dual.triangles));
+      if (kind < 2) {
+        const Eigen::Matrix2d Lt = p.metric.metric(0).llt().matrixL().transpose();
+        CHECK(duals.back() == test::delaunay_in_box(p.seeds, 0.0, 1.0, Lt).triangles);
+      }
     }
+    // The centre seed joins all four others in the isotropic metric, not in
+    // the constant anisotropic one.
+    CHECK(duals[0] == std::set<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}});
+    CHECK(duals[1] == std::set<std::array<int, 3>>{{0, 1, 2}, {0, 3, 4}, {0, 4, 1}});
   }
-  // The centre seed joins all four others in the isotropic metric, not in
-  // the constant anisotropic one.
-  CHECK(duals[0] == std::set<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}});
-  CHECK(duals[1] == std::set<std::array<int, 3>>{{0, 1, 2}, {0, 3, 4}, {0, 4, 1}});
+  CHECK(by_engine[0] == by_engine[1]);
 }
 
 TEST_CASE("crystals in a disc conform to its boundary, wet or dry", "[voronoi][delaunay]") {
