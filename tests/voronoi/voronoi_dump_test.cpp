@@ -45,7 +45,8 @@ std::string out_path(const std::string& file) {
 void dump(const test::ThesisExample& e, const std::string& engine) {
   const VoronoiProblem& p = e.problem;
   const auto start = std::chrono::steady_clock::now();
-  const RefinedDual r = refine_dual(p, engine);
+  // As the thesis grows them: no seeds added (the faults are drawn instead).
+  const RefinedDual r = refine_dual(p, engine, {}, {0, 2.0});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string name = e.name + "_" + engine;

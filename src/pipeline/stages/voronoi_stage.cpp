@@ -357,14 +357,17 @@ Stage voronoi_stage() {
           "new linear triangle mesh of the input's CAD, dual to the crystal Voronoi diagram "
           "(thesis Ch 2; replaces any mesh)",
           {{"metric", "iso",
-            "iso (sizes of the mesh stage's default mesh) | bl (iso, 5x finer across walls: "
-            "curves not in a group 'farfield') | FILE (grid of SPD tensors, see docs)"},
-           {"seeds", "auto", "auto (Poisson-disc in the metric) | FILE (interior seeds, 'x y')"},
+            "iso (the sizes of the mesh stage's default mesh) | bl (iso, 5 times finer across "
+            "the walls: curves not in a group 'farfield') | FILE (a coarse grid of 2x2 SPD "
+            "tensors, format in src/voronoi/voronoi_files.h)"},
+           {"seeds", "auto",
+            "auto (Poisson-disc in the metric) | FILE (interior seeds, one 'x y' per line; the "
+            "boundary seeds are placed from the metric)"},
            {"engine", "fast_marching", "fast_marching | level_set"},
            {"grid", "0",
-            "grid nodes along the longer side (0: the smallest size over 6 cells, "
-            "200 to 1500)"}},
-          run, true};
+            "grid nodes along the longer side (0: the smallest size over 6 cells, 200 to 1500)"}},
+          run,
+          true};
 }
 
 }  // namespace homesh
