@@ -12,7 +12,7 @@ namespace homesh {
 namespace {
 
 std::string where(const Mesh& m, int e) {
-  const Eigen::Vector2d c = (m.x.col(m.tri(0, e)) + m.x.col(m.tri(1, e)) + m.x.col(m.tri(2, e))) / 3;
+  const Eigen::Vector2d c = m.corner_centroid(e);
   std::ostringstream s;
   s << "triangle " << e + 1 << " at (" << c.x() << ", " << c.y() << ")";
   return s.str();

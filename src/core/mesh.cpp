@@ -8,4 +8,8 @@ Eigen::Matrix2Xd Mesh::triangle_nodes(int e) const {
   return X;
 }
 
+Eigen::Vector2d Mesh::corner_centroid(int e) const {
+  return (x.col(tri(0, e)) + x.col(tri(1, e)) + x.col(tri(2, e))) / 3.0;
+}
+
 }  // namespace homesh

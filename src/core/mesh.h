@@ -72,6 +72,8 @@ struct Mesh {
 
   /// 2 by (p+1)(p+2)/2 coordinates of the nodes of triangle e, Gmsh order.
   Eigen::Matrix2Xd triangle_nodes(int e) const;
+  /// Centroid of the three corners of triangle e (where reports place it).
+  Eigen::Vector2d corner_centroid(int e) const;
 };
 
 /// Highest element order homesh supports (the basis stays accurate to ~1e-10).

@@ -8,17 +8,13 @@
 
 namespace homesh {
 
-Eigen::Vector2d centroid(const Mesh& m, int e) {
-  return (m.x.col(m.tri(0, e)) + m.x.col(m.tri(1, e)) + m.x.col(m.tri(2, e))) / 3.0;
-}
-
 std::string validity_line(const Mesh& m, const MeshValidity& v) {
   std::string line = fmt::format(
       "validity: {} invalid of {} triangles (certified by Bezier bounds of det J, relative "
       "tolerance {:g})",
       v.invalid, m.num_triangles(), v.relative_tolerance);
   if (v.worst_element >= 0) {
-    const Eigen::Vector2d c = centroid(m, v.worst_element);
+    const Eigen::Vector2d c = m.corner_centroid(v.worst_element);
     line += fmt::format("; worst minJ/maxJ {:.4f} at triangle {} ({:.4g}, {:.4g})", v.worst,
                         v.worst_element + 1, c.x(), c.y());
   }
@@ -44,7 +40,7 @@ std::string worst_elements(const Mesh& m, const Eigen::VectorXd& values, int cou
                     [&](int a, int b) { return values(a) < values(b); });
   std::string out;
   for (int k = 0; k < n; ++k) {
-    const Eigen::Vector2d c = centroid(m, order[k]);
+    const Eigen::Vector2d c = m.corner_centroid(order[k]);
     out += fmt::format("    triangle {:<8} at ({:.4g}, {:.4g})  {:.4f}\n", order[k] + 1, c.x(),
                        c.y(), values(order[k]));
   }

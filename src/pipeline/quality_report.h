@@ -19,7 +19,4 @@ std::string histogram_line(const std::string& name, const Eigen::VectorXd& value
 /// centroid and value, one per line.
 std::string worst_elements(const Mesh& m, const Eigen::VectorXd& values, int count);
 
-/// Centroid of the corners of triangle e.
-Eigen::Vector2d centroid(const Mesh& m, int e);
-
 }  // namespace homesh
