@@ -2,9 +2,11 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "fem/solve_elasticity.h"
 #include "quality/mesh_validity.h"
 
@@ -60,6 +62,7 @@ RotateResult rotate_boundary(const Mesh& m, const std::vector<bool>& wall,
       static_cast<int>(std::floor(opt.max_angle / std::abs(opt.step) + 1e-9));
   const int solves_per_step = opt.total ? 1 : opt.substeps;
   bool failed = false;
+  Progress progress("step", max_steps);
   while (r.steps < max_steps && !failed) {
     double step_worst = 1.0;
     for (int s = 1; s <= solves_per_step && !failed; ++s) {
@@ -93,6 +96,9 @@ RotateResult rotate_boundary(const Mesh& m, const std::vector<bool>& wall,
     ++r.steps;
     r.mesh = current;
     r.worst_ratio = std::min(r.worst_ratio, step_worst);
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%g deg", r.steps * opt.step);
+    progress.update(r.steps, angle);
   }
   r.theta_max = r.steps * std::abs(opt.step);
   r.reached_max = !failed;

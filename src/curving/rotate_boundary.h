@@ -23,7 +23,7 @@
 // `substeps`, which keeps theta_max on the grid of h). Wall targets are always
 // the exact rotation of the initial wall, so no drift accumulates. Angles are
 // in degrees, anticlockwise positive. CG starts from the previous solve's
-// displacement.
+// displacement. Each accepted step is reported as progress (core/progress.h).
 #include <Eigen/Core>
 #include <string>
 #include <vector>

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "gmsh/gmsh_call.h"
 #include "gmsh/read_model.h"
 #include "gmsh/views.h"
@@ -78,7 +79,14 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
     const Stage& m = stage("mesh");
     m.run(ctx, Options(m.name, m.options, {}));
   }
-  for (auto& [s, options] : plan) s->run(ctx, options);
+  set_progress(progress_wanted(ctx.log.quiet));
+  for (std::size_t k = 0; k < plan.size(); ++k) {
+    const Progress stage_label(
+        "stage " + std::to_string(k + 1) + "/" + std::to_string(plan.size()) + " " +
+            plan[k].first->name,
+        0);
+    plan[k].first->run(ctx, plan[k].second);
+  }
 }
 
 void write_output(const std::string& path, const std::string& provenance, Context& ctx) {

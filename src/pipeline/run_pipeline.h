@@ -17,6 +17,9 @@ void load_input(const std::string& path, Context& ctx);
 
 /// Runs `calls` on `ctx` in order. A CAD input without a mesh is first meshed
 /// with the `mesh` stage's defaults unless some call creates a mesh itself.
+/// Long stages show progress on a terminal (core/progress.h: on when stderr
+/// is a terminal and ctx.log is not quiet, or as HOMESH_PROGRESS says), under
+/// the label "stage k/n NAME".
 void run_stages(const std::vector<StageCall>& calls, Context& ctx);
 
 /// Certifies the validity of ctx's mesh, then writes it and ctx's fields (plus

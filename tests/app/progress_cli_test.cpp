@@ -1,0 +1,71 @@
+// Progress of a long run: drawn on stderr (one line, redrawn with \r, erased
+// at the end) when asked by HOMESH_PROGRESS=1 or when stderr is a terminal;
+// nothing at all when stderr is a file or a pipe.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "../support/run_command.h"
+
+namespace {
+
+struct Run {
+  int exit_code;
+  std::string out;  ///< stdout
+  std::string err;  ///< stderr
+};
+
+// The rotation benchmark of geo/README.md (99 degrees), stdout and stderr apart.
+Run rotate_plate(const std::string& env) {
+  const std::string err_file = "/tmp/homesh_progress_test.err";
+  const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/plate_hole_fig413.geo";
+  const auto r = homesh::test::run_command("(" + env + " " + HOMESH_BINARY + " " + geo +
+                                           " -m mesh -m curve:p=2 -m rotate:nu=0.45 2>" +
+                                           err_file + ")");
+  std::ifstream in(err_file);
+  std::stringstream err;
+  err << in.rdbuf();
+  std::remove(err_file.c_str());
+  return {r.exit_code, r.output, err.str()};
+}
+
+}  // namespace
+
+TEST_CASE("progress: HOMESH_PROGRESS=1 draws the rotation's steps under its stage", "[app]") {
+  const Run r = rotate_plate("HOMESH_PROGRESS=1");
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("rotate: theta_max = 99 deg") != std::string::npos);
+  // The first step is drawn at once; later ones at most every 0.1 s, in order, up to 99.
+  REQUIRE(r.err.rfind("\rhomesh: stage 3/3 rotate | step 1/360 1 deg\033[K", 0) == 0);
+  const std::regex step(R"(\rhomesh: stage 3/3 rotate \| step (\d+)/360 (\d+) deg\x1b\[K)");
+  int draws = 0, last = 0;
+  for (auto it = std::sregex_iterator(r.err.begin(), r.err.end(), step);
+       it != std::sregex_iterator(); ++it, ++draws) {
+    const int k = std::stoi((*it)[1]);
+    REQUIRE(k > last);
+    REQUIRE(k <= 99);
+    REQUIRE(std::stoi((*it)[2]) == k);
+    last = k;
+  }
+  REQUIRE(draws >= 1);
+  // The line is erased before the stage reports, so nothing else is on stderr.
+  const std::string erased = std::regex_replace(r.err, step, "");
+  REQUIRE(erased == "\r\033[K");
+  // No progress line on stdout.
+  REQUIRE(r.out.find("step 1/360") == std::string::npos);
+}
+
+TEST_CASE("progress: stderr not a terminal, or HOMESH_PROGRESS=0: not a byte", "[app]") {
+  for (const std::string env : {"env -u HOMESH_PROGRESS", "HOMESH_PROGRESS=0"}) {
+    CAPTURE(env);
+    const Run r = rotate_plate(env);
+    INFO(r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(r.out.find("rotate: theta_max = 99 deg") != std::string::npos);
+    REQUIRE(r.err.empty());
+  }
+}
