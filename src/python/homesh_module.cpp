@@ -1,28 +1,20 @@
 // `import homesh`: the pipeline stages as Python functions acting on the
 // current Gmsh model of the same process (the Python gmsh module and this
-// extension share one libgmsh). homesh never initializes or finalizes Gmsh.
+// extension share one libgmsh), through the C++ API (api/homesh.h): the same
+// functions, errors and results. homesh never initializes or finalizes Gmsh.
 //
 //   gmsh.initialize(); gmsh.open("geo/naca.geo"); gmsh.model.mesh.generate(2)
 //   homesh.order(p=4)          # any stage, options as keyword arguments
 //   homesh.write("out.msh")    # mesh + views + .opt sidecar, atomically
-#include <gmsh.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "core/error.h"
-#include "gmsh/gmsh_call.h"
-#include "gmsh/read_model.h"
-#include "gmsh/views.h"
-#include "gmsh/write_model.h"
-#include "gmsh/write_msh.h"
-#include "pipeline/stage_registry.h"
+#include "api/homesh.h"
 
 namespace py = pybind11;
 
 namespace homesh {
 namespace {
-
-bool quiet = false;
 
 std::string option_text(const py::handle& value) {
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
@@ -35,41 +27,33 @@ std::string option_text(const py::handle& value) {
   return py::str(value).cast<std::string>();
 }
 
-/// Runs one stage on the current model and writes the result back into it.
+py::dict validity_dict(const api::Validity& v) {
+  return py::dict(py::arg("triangles") = v.triangles, py::arg("invalid") = v.invalid,
+                  py::arg("worst") = v.worst, py::arg("worst_triangle") = v.worst_triangle,
+                  py::arg("line") = v.line);
+}
+
+/// Runs one stage on the current model (api::run) and returns its result as a dict.
 py::dict run_stage(const std::string& name, const py::kwargs& kwargs) {
-  const Stage& s = stage(name);
-  std::map<std::string, std::string> given;
+  api::StageOptions given;
   for (const auto& [key, value] : kwargs) given[key.cast<std::string>()] = option_text(value);
-  const Options options(s.name, s.options, given);
-
-  Context ctx;
-  ctx.input = "the current Gmsh model";
-  ctx.log.quiet = quiet;
-  ctx.has_cad = gmsh_adapter::model_has_cad();
-  if (gmsh_adapter::model_has_mesh()) ctx.mesh = gmsh_adapter::read_model(ctx.input);
-  s.run(ctx, options);
-
+  const api::Result r = api::run(name, given);
   py::dict result;
-  result["results"] = ctx.results;
-  if (!ctx.mesh) return result;
-  std::vector<int> views;
-  gmsh_adapter::gmsh_call("writing the mesh into the current Gmsh model", [&] {
-    views = gmsh_adapter::add_views(ctx.fields, gmsh_adapter::write_model(*ctx.mesh));
-  });
-  result["order"] = ctx.mesh->order;
-  result["nodes"] = ctx.mesh->num_nodes();
-  result["triangles"] = ctx.mesh->num_triangles();
-  result["views"] = views;
+  result["results"] = r.results;
+  if (!r.has_mesh) return result;
+  result["order"] = r.order;
+  result["nodes"] = r.nodes;
+  result["triangles"] = r.triangles;
+  result["views"] = r.views;
+  result["validity"] = validity_dict(r.validity);
   return result;
 }
 
 void write_file(const std::string& path) {
-  std::vector<int> views;
-  gmsh::view::getTags(views);
   const auto argv = py::module_::import("sys").attr("argv").cast<std::vector<std::string>>();
   std::string line = "python3";
   for (const auto& a : argv) line += " " + a;
-  gmsh_adapter::write_msh(path, views, "homesh (Python)\n" + line);
+  api::write(path, "homesh (Python)\n" + line);
 }
 
 }  // namespace
@@ -84,23 +68,24 @@ PYBIND11_MODULE(homesh, m) {
       if (p) std::rethrow_exception(p);
     } catch (const Error& e) {
       PyErr_SetString(error.ptr(), e.what());
-    } catch (const std::string& e) {
-      PyErr_SetString(error.ptr(), ("Gmsh: " + e).c_str());
     }
   });
 
   m.def("run", &run_stage, py::arg("stage"),
         "Run a stage (see stages()) on the current Gmsh model, options as keyword arguments; "
-        "returns order, node and triangle counts, the tags of the views it added and the numbers "
-        "the stage reports (results).");
+        "returns order, node and triangle counts, the tags of the views it added, the numbers "
+        "the stage reports (results) and the mesh's certified validity (see validity()).");
   m.def("write", &write_file, py::arg("path"),
         "Write the current model's mesh and views to a MSH 4.1 file (atomically) with its .opt "
         "sidecar.");
-  m.def("set_quiet", [](bool q) { quiet = q; }, py::arg("quiet") = true,
-        "Silence homesh's progress messages.");
+  m.def("set_quiet", &api::set_quiet, py::arg("quiet") = true,
+        "Silence homesh's reports and progress (warnings stay).");
+  m.def("validity", [] { return validity_dict(api::validity()); },
+        "Certified validity of the current model's mesh: triangles, invalid, worst minJ/maxJ, "
+        "its triangle (1-based) and the CLI's validity line.");
   m.def("stages", [] {
     py::list out;
-    for (const Stage& s : stages()) {
+    for (const api::StageInfo& s : api::stages()) {
       py::dict options;
       for (const auto& o : s.options) options[o.name.c_str()] = py::make_tuple(o.default_value, o.help);
       out.append(py::dict(py::arg("name") = s.name, py::arg("summary") = s.summary,
@@ -109,10 +94,9 @@ PYBIND11_MODULE(homesh, m) {
     return out;
   });
   // One function per stage, named after it, so `homesh.order(p=4)` reads like the CLI.
-  for (const Stage& s : stages()) {
-    std::string doc = stage_help(s);
+  for (const api::StageInfo& s : api::stages()) {
     const std::string name = s.name;
     m.def(name.c_str(), [name](const py::kwargs& kw) { return run_stage(name, kw); },
-          doc.c_str());
+          s.help.c_str());
   }
 }

@@ -73,3 +73,24 @@ def test_quality_returns_its_numbers(session):
     assert 1 <= res["worst_triangle"] <= r["triangles"]
     assert 0 < res["Q11_min"] <= res["Q11_mean"] <= 1
     assert len(r["views"]) == 5
+
+
+def test_every_result_carries_the_certified_validity(session):
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    gmsh.model.mesh.generate(2)
+    r = homesh.curve(p=4)
+    v = r["validity"]
+    assert v["triangles"] == r["triangles"] and v["invalid"] == 0
+    assert v["line"].startswith(f"validity: 0 invalid of {r['triangles']} triangles")
+    assert 0.5 < v["worst"] <= 1 and 1 <= v["worst_triangle"] <= r["triangles"]
+    # The same as the quality stage certifies, and as homesh.validity() reads from the model.
+    q = homesh.quality(measures="Q4")
+    assert q["results"]["worst_minJ_maxJ"] == v["worst"]
+    assert q["results"]["worst_triangle"] == v["worst_triangle"]
+    assert homesh.validity() == q["validity"]
+
+
+def test_validity_needs_a_mesh(session):
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    with pytest.raises(homesh.Error, match="has no triangles"):
+        homesh.validity()

@@ -1,0 +1,98 @@
+#pragma once
+// homesh for C++ Gmsh-API programs: the pipeline stages as functions acting on
+// the current Gmsh model of the same process, as `import homesh` does in
+// Python. homesh never initializes or finalizes Gmsh; the program does.
+// Installed as <homesh/homesh.h>; it needs only the standard library (link
+// the CMake target homesh::homesh, see scripts/examples/cpp/).
+//
+//   gmsh::initialize();
+//   gmsh::open("plate.geo");
+//   gmsh::model::mesh::generate(2);
+//   homesh::api::curve({{"p", "3"}});               // order 3, curved, valid
+//   auto q = homesh::api::quality({{"measures", "Q4"}});
+//   std::cout << q.validity.line << "\n";           // "validity: 0 invalid of ..."
+//   homesh::api::write("plate.msh");                // mesh, views, .opt sidecar
+//
+// Options are the CLI stage options (`homesh --help STAGE`), values written
+// as on the command line ({"nu", "0.45"}, {"measures", "Q4,Q17"}). Every
+// failure throws homesh::Error with the CLI's message (Gmsh's own errors as
+// "Gmsh: ...").
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+
+namespace homesh::api {
+
+/// Options of one stage: option name -> value as on the command line.
+using StageOptions = std::map<std::string, std::string>;
+
+/// Certified validity of the model's mesh (Bezier bounds of the Jacobian
+/// determinant; quality/mesh_validity.h).
+struct Validity {
+  int triangles = 0;
+  int invalid = 0;          ///< triangles not certified valid
+  double worst = 1;         ///< smallest certified minJ/maxJ, in [-1, 1]
+  int worst_triangle = 0;   ///< the triangle of `worst`, 1-based
+  std::string line;         ///< the CLI's one-line summary ("validity: ...")
+};
+
+/// What a stage did to the current model.
+struct Result {
+  /// Named numbers the stage reports (e.g. rotate's theta_max, quality's
+  /// invalid and Q4_min); empty for stages that report none.
+  std::map<std::string, double> results;
+  bool has_mesh = false;   ///< the model holds a mesh after the stage
+  int order = 0;           ///< element order of that mesh
+  int nodes = 0;
+  int triangles = 0;
+  std::vector<int> views;  ///< tags of the Gmsh views the stage added
+  Validity validity;       ///< of the mesh after the stage (if has_mesh)
+};
+
+/// One option of a stage, with its default and help text.
+struct OptionInfo {
+  std::string name;
+  std::string default_value;
+  std::string help;
+};
+
+/// A stage of the registry: name, one-line summary, options.
+struct StageInfo {
+  std::string name;
+  std::string summary;
+  std::vector<OptionInfo> options;
+  std::string help;  ///< the text of `homesh --help NAME`
+};
+
+/// Every stage, in the order `homesh --list` shows them.
+std::vector<StageInfo> stages();
+
+/// Runs stage `name` on the current Gmsh model: reads its mesh (if any),
+/// transforms it, and writes the mesh and the stage's fields (as views) back
+/// into the model.
+Result run(const std::string& name, const StageOptions& options = {});
+
+/// One function per stage, named after it: run("mesh", options) etc.
+Result mesh(const StageOptions& options = {});
+Result order(const StageOptions& options = {});
+Result layers(const StageOptions& options = {});
+Result curve(const StageOptions& options = {});
+Result rotate(const StageOptions& options = {});
+Result quality(const StageOptions& options = {});
+Result info(const StageOptions& options = {});
+Result voronoi(const StageOptions& options = {});
+
+/// Certified validity of the current model's mesh.
+Validity validity();
+
+/// Writes the current model's mesh and all its views to `path` (MSH 4.1,
+/// atomically) with the `.opt` sidecar that displays curved fields curved;
+/// `provenance` (e.g. the program's command line) is recorded in the file.
+void write(const std::string& path, const std::string& provenance = "homesh C++ API");
+
+/// Silences the stages' reports on stdout (warnings stay) and progress.
+void set_quiet(bool quiet = true);
+
+}  // namespace homesh::api
