@@ -1,4 +1,5 @@
 """The worked scripts of scripts/examples/ run and print a certified-valid mesh."""
+import csv
 import os
 import re
 import subprocess
@@ -56,6 +57,32 @@ def test_naca7526_boundary_layers_curved_to_order_4(tmp_path):
     else:
         assert "no 'layers' stage" in log and triangles == 2747
     assert "Q4" in views(msh)
+
+
+def test_plate_rotation_matches_the_cli_and_carries_the_thesis_values(tmp_path):
+    log = run("plate_rotation.py", "--out", str(tmp_path))
+    assert "geo/plate_hole_fig413.geo: 71 quadratic triangles" in log
+    with open(tmp_path / "plate_rotation.csv") as f:
+        rows = {(r["formulation"], float(r["nu"])): r for r in csv.DictReader(f)}
+    assert len(rows) == 16 and (tmp_path / "plate_rotation.png").stat().st_size > 10000
+    # Case 1 at nu = 0.4 is the CLI's rotate stage on the same pipeline, to the degree.
+    binary = os.path.join(os.path.dirname(homesh.__file__), "..", "homesh")
+    cli = subprocess.run([binary, os.path.join(ROOT, "geo", "plate_hole_fig413.geo"), "-m", "mesh",
+                          "-m", "curve:p=2", "-m", "rotate:nu=0.4:formulation=plain"],
+                         capture_output=True, text=True, check=True).stdout
+    theta = int(re.search(r"rotate: theta_max = (\d+) deg", cli).group(1))
+    assert int(rows[("plain", 0.4)]["theta_max"]) == theta == 91
+    # The thesis' Table 4.1 and 4.2 values beside ours (thesis 90 and 110).
+    assert int(rows[("plain", 0.4)]["thesis_theta_max"]) == 90
+    assert int(rows[("area", 0.45)]["thesis_theta_max"]) == 110
+    # As in the thesis: theta_max grows with nu for case 1, and E = 1/Ae (case 2) and the
+    # added heat (case 4) turn the hole further than case 1 at every nu.
+    plain = [int(rows[("plain", nu)]["theta_max"]) for nu in (0.05, 0.25, 0.4, 0.45)]
+    assert plain == sorted(plain) and plain[0] >= 80
+    for nu in (0.05, 0.25, 0.4, 0.45):
+        assert int(rows[("area", nu)]["theta_max"]) > int(rows[("plain", nu)]["theta_max"])
+        assert int(rows[("heat_q17", nu)]["theta_max"]) > int(rows[("plain", nu)]["theta_max"])
+        assert 0 < float(rows[("plain", nu)]["worst_ratio"]) < 1
 
 
 def test_gen_reference_lists_every_stage_and_measure():
