@@ -23,21 +23,28 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
   const Eigen::Matrix2Xd start = m.x;
 
   DeformResult r{m, 0.0, false, 0, 0, 1.0, 0};
+  // The prescribed dofs are the same at every increment: one pattern, one
+  // symbolic analysis. A halved increment keeps the mesh, hence the stiffness
+  // and loads: it only needs new prescribed values (resolve).
+  auto boundary_condition = [&](double fraction) {
+    DirichletBC bc;
+    for (int i = 0; i < m.num_nodes(); ++i)
+      if (prescribed[i])
+        bc.fix(i, Eigen::Vector2d(start.col(i) + fraction * (target.col(i) - start.col(i)) -
+                                  r.mesh.x.col(i)));
+    return bc;
+  };
+  ElasticitySolver solver(m, boundary_condition(0.0), {opt.params.assembly, opt.solver});
   const double full_step = 1.0 / opt.increments;
   double step = full_step;
   int halvings = 0;
   while (r.reached < 1.0 - 1e-12) {
     const double next = std::min(1.0, r.reached + step);
-    DirichletBC bc;
-    for (int i = 0; i < m.num_nodes(); ++i)
-      if (prescribed[i])
-        bc.fix(i, Eigen::Vector2d(start.col(i) + next * (target.col(i) - start.col(i)) -
-                                  r.mesh.x.col(i)));
-    ElasticityOptions eo;
-    eo.assembly = opt.params.assembly;
-    eo.solver = opt.solver;
+    const DirichletBC bc = boundary_condition(next);
     const ElasticitySolution s =
-        solve_elasticity(r.mesh, formulation.coefficients(r.mesh, m, opt.params), bc, eo);
+        halvings == 0
+            ? solver.solve(r.mesh.x, formulation.coefficients(r.mesh, m, opt.params), bc)
+            : solver.resolve(bc);
     ++r.solves;
     r.iterations += s.iterations;
 

@@ -12,13 +12,26 @@ namespace homesh {
 
 bool cholmod_available() { return true; }
 
-Eigen::VectorXd cholmod_solve(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b) {
+struct CholmodFactor::Impl {
   Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
-  solver.compute(K);
-  if (solver.info() != Eigen::Success)
-    throw Error("cholmod_solve: factorisation failed (matrix not positive definite?)");
-  Eigen::VectorXd x = solver.solve(b);
-  if (solver.info() != Eigen::Success) throw Error("cholmod_solve: solve failed");
+};
+
+CholmodFactor::CholmodFactor() : impl_(std::make_unique<Impl>()) {}
+
+void CholmodFactor::analyze(const Eigen::SparseMatrix<double>& K) {
+  impl_->solver.analyzePattern(K);
+  if (impl_->solver.info() != Eigen::Success) throw Error("cholmod: symbolic analysis failed");
+}
+
+void CholmodFactor::factorize(const Eigen::SparseMatrix<double>& K) {
+  impl_->solver.factorize(K);
+  if (impl_->solver.info() != Eigen::Success)
+    throw Error("cholmod: factorisation failed (matrix not positive definite?)");
+}
+
+Eigen::VectorXd CholmodFactor::solve(const Eigen::VectorXd& b) const {
+  Eigen::VectorXd x = impl_->solver.solve(b);
+  if (impl_->solver.info() != Eigen::Success) throw Error("cholmod: solve failed");
   return x;
 }
 
@@ -26,10 +39,24 @@ Eigen::VectorXd cholmod_solve(const Eigen::SparseMatrix<double>& K, const Eigen:
 
 bool cholmod_available() { return false; }
 
-Eigen::VectorXd cholmod_solve(const Eigen::SparseMatrix<double>&, const Eigen::VectorXd&) {
-  throw Error("cholmod_solve: homesh was built without CHOLMOD (HOMESH_WITH_CHOLMOD)");
+struct CholmodFactor::Impl {};
+
+CholmodFactor::CholmodFactor() = default;
+
+void CholmodFactor::analyze(const Eigen::SparseMatrix<double>&) {}
+
+void CholmodFactor::factorize(const Eigen::SparseMatrix<double>&) {
+  throw Error("cholmod: homesh was built without CHOLMOD (HOMESH_WITH_CHOLMOD)");
+}
+
+Eigen::VectorXd CholmodFactor::solve(const Eigen::VectorXd&) const {
+  throw Error("cholmod: homesh was built without CHOLMOD (HOMESH_WITH_CHOLMOD)");
 }
 
 #endif
+
+CholmodFactor::~CholmodFactor() = default;
+CholmodFactor::CholmodFactor(CholmodFactor&&) noexcept = default;
+CholmodFactor& CholmodFactor::operator=(CholmodFactor&&) noexcept = default;
 
 }  // namespace homesh

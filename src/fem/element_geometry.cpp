@@ -1,5 +1,6 @@
 #include "fem/element_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -8,32 +9,38 @@
 namespace homesh {
 
 ElementGeometry element_geometry(const Eigen::Matrix2Xd& X, const ElementTabulation& tab) {
+  ElementGeometry g;
+  element_geometry(X, tab, g);
+  return g;
+}
+
+void element_geometry(const Eigen::Matrix2Xd& X, const ElementTabulation& tab, ElementGeometry& g) {
   if (X.cols() != tab.N.rows())
     throw Error("element_geometry: " + std::to_string(X.cols()) + " nodes for order " +
                 std::to_string(tab.order));
-  // Columns of J at every point: (dx/du, dy/du) and (dx/dv, dy/dv).
-  const Eigen::Matrix2Xd Ju = X * tab.dNdu;
-  const Eigen::Matrix2Xd Jv = X * tab.dNdv;
-  const Eigen::ArrayXd det = Ju.row(0).array() * Jv.row(1).array() -
-                             Jv.row(0).array() * Ju.row(1).array();
-  const bool positive = det.minCoeff() > 0.0;
-  if (!positive && !(det.maxCoeff() < 0.0))
+  const Eigen::Index n = tab.N.rows(), nq = tab.N.cols();
+  g.x.resize(2, nq);
+  g.dNdx.resize(n, nq);
+  g.dNdy.resize(n, nq);
+  g.weight.resize(nq);
+  double det_min = INFINITY, det_max = -INFINITY;
+  for (Eigen::Index q = 0; q < nq; ++q) {
+    // Columns of J: (dx/du, dy/du) and (dx/dv, dy/dv).
+    const Eigen::Vector2d ju = X * tab.dNdu.col(q);
+    const Eigen::Vector2d jv = X * tab.dNdv.col(q);
+    const double det = ju(0) * jv(1) - jv(0) * ju(1);
+    det_min = std::min(det_min, det);
+    det_max = std::max(det_max, det);
+    // J^-T = [dy/dv, -dy/du; -dx/dv, dx/du] / det J.
+    const double a = jv(1) / det, b = ju(1) / det, c = jv(0) / det, d = ju(0) / det;
+    g.dNdx.col(q) = a * tab.dNdu.col(q) - b * tab.dNdv.col(q);
+    g.dNdy.col(q) = d * tab.dNdv.col(q) - c * tab.dNdu.col(q);
+    g.weight(q) = tab.rule.weights(q) * std::abs(det);
+    g.x.col(q) = X * tab.N.col(q);
+  }
+  if (!(det_min > 0.0) && !(det_max < 0.0))
     throw Error("element_geometry: det J changes sign or vanishes (min " +
-                std::to_string(det.minCoeff()) + ", max " + std::to_string(det.maxCoeff()) +
-                ")");
-  // J^-T = [dy/dv, -dy/du; -dx/dv, dx/du] / det J.
-  const Eigen::ArrayXd a = Jv.row(1).transpose().array() / det;
-  const Eigen::ArrayXd b = Ju.row(1).transpose().array() / det;
-  const Eigen::ArrayXd c = Jv.row(0).transpose().array() / det;
-  const Eigen::ArrayXd d = Ju.row(0).transpose().array() / det;
-  ElementGeometry g;
-  g.x = X * tab.N;
-  g.dNdx = tab.dNdu * a.matrix().asDiagonal();
-  g.dNdx -= tab.dNdv * b.matrix().asDiagonal();
-  g.dNdy = tab.dNdv * d.matrix().asDiagonal();
-  g.dNdy -= tab.dNdu * c.matrix().asDiagonal();
-  g.weight = (tab.rule.weights.array() * det.abs()).matrix();
-  return g;
+                std::to_string(det_min) + ", max " + std::to_string(det_max) + ")");
 }
 
 }  // namespace homesh

@@ -24,4 +24,8 @@ struct ElementGeometry {
 /// sign between quadrature points (an invalid element).
 ElementGeometry element_geometry(const Eigen::Matrix2Xd& X, const ElementTabulation& tab);
 
+/// The same into g, reusing its storage: no allocation once g has the sizes of
+/// `tab` (the form the assembly loop uses).
+void element_geometry(const Eigen::Matrix2Xd& X, const ElementTabulation& tab, ElementGeometry& g);
+
 }  // namespace homesh

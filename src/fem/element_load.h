@@ -19,4 +19,8 @@ namespace homesh {
 Eigen::VectorXd element_load(const ElementGeometry& g, const Eigen::MatrixXd& N,
                              const Eigen::Matrix2Xd& f, const Eigen::Matrix3Xd& sigma_t);
 
+/// The same into fe (resized), without allocating once it has size 2n.
+void element_load(const ElementGeometry& g, const Eigen::MatrixXd& N, const Eigen::Matrix2Xd& f,
+                  const Eigen::Matrix3Xd& sigma_t, Eigen::VectorXd& fe);
+
 }  // namespace homesh

@@ -2,22 +2,34 @@
 
 namespace homesh {
 
+void element_stiffness_lower(const ElementGeometry& g, const Eigen::VectorXd& lambda,
+                             const Eigen::VectorXd& mu, Eigen::MatrixXd& K,
+                             Eigen::MatrixXd& scratch) {
+  const Eigen::Index n = g.dNdx.rows();
+  K.resize(2 * n, 2 * n);
+  // Each block is G1 diag(w c) G2^T summed over the terms of Eq 4.15, with
+  // scratch = G1 diag(w c); weights w (lambda + 2 mu), w mu, w lambda.
+  auto A = K.topLeftCorner(n, n);
+  auto B = K.bottomLeftCorner(n, n);  // B^T: int lambda dNi/dy dNj/dx + mu dNi/dx dNj/dy
+  auto C = K.bottomRightCorner(n, n);
+  scratch.noalias() = g.dNdx * (g.weight.cwiseProduct(lambda + 2.0 * mu)).asDiagonal();
+  A.noalias() = scratch * g.dNdx.transpose();
+  scratch.noalias() = g.dNdy * (g.weight.cwiseProduct(mu)).asDiagonal();
+  A.noalias() += scratch * g.dNdy.transpose();
+  scratch.noalias() = g.dNdx * (g.weight.cwiseProduct(mu)).asDiagonal();
+  C.noalias() = scratch * g.dNdx.transpose();
+  B.noalias() = scratch * g.dNdy.transpose();
+  scratch.noalias() = g.dNdy * (g.weight.cwiseProduct(lambda)).asDiagonal();
+  B.noalias() += scratch * g.dNdx.transpose();
+  scratch.noalias() = g.dNdy * (g.weight.cwiseProduct(lambda + 2.0 * mu)).asDiagonal();
+  C.noalias() += scratch * g.dNdy.transpose();
+}
+
 Eigen::MatrixXd element_stiffness(const ElementGeometry& g, const Eigen::VectorXd& lambda,
                                   const Eigen::VectorXd& mu) {
-  const Eigen::Index n = g.dNdx.rows();
-  const Eigen::VectorXd wl = g.weight.cwiseProduct(lambda);
-  const Eigen::VectorXd wm = g.weight.cwiseProduct(mu);
-  const Eigen::VectorXd wl2m = wl + 2.0 * wm;
-  Eigen::MatrixXd K(2 * n, 2 * n);
-  // Each block is G1 diag(w c) G2^T summed over the terms of Eq 4.15.
-  K.topLeftCorner(n, n).noalias() = g.dNdx * wl2m.asDiagonal() * g.dNdx.transpose();
-  K.topLeftCorner(n, n).noalias() += g.dNdy * wm.asDiagonal() * g.dNdy.transpose();
-  K.topRightCorner(n, n).noalias() = g.dNdx * wl.asDiagonal() * g.dNdy.transpose();
-  K.topRightCorner(n, n).noalias() += g.dNdy * wm.asDiagonal() * g.dNdx.transpose();
-  K.bottomRightCorner(n, n).noalias() = g.dNdx * wm.asDiagonal() * g.dNdx.transpose();
-  K.bottomRightCorner(n, n).noalias() += g.dNdy * wl2m.asDiagonal() * g.dNdy.transpose();
-  K.bottomLeftCorner(n, n) = K.topRightCorner(n, n).transpose();
-  // Exactly symmetric (the products above may round A and C asymmetrically).
+  Eigen::MatrixXd K, scratch;
+  element_stiffness_lower(g, lambda, mu, K, scratch);
+  // Exactly symmetric: the upper triangle mirrors the lower one.
   Eigen::MatrixXd symmetric = K.selfadjointView<Eigen::Lower>();
   return symmetric;
 }

@@ -17,6 +17,13 @@ namespace homesh {
 Eigen::MatrixXd element_stiffness(const ElementGeometry& g, const Eigen::VectorXd& lambda,
                                   const Eigen::VectorXd& mu);
 
+/// The lower triangle of the same Ke into K (2n by 2n, resized; the strict
+/// upper triangle is left unspecified), with `scratch` (n by #points) as
+/// workspace: no allocation once both have their sizes.
+void element_stiffness_lower(const ElementGeometry& g, const Eigen::VectorXd& lambda,
+                             const Eigen::VectorXd& mu, Eigen::MatrixXd& K,
+                             Eigen::MatrixXd& scratch);
+
 /// The same from the element's nodes X (2 by n, Gmsh order, order tab.order).
 Eigen::MatrixXd element_stiffness(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
                                   const Eigen::VectorXd& lambda, const Eigen::VectorXd& mu);

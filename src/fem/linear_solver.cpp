@@ -1,50 +1,93 @@
 #include "fem/linear_solver.h"
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <string>
 #include <utility>
 
 #include "core/error.h"
 #include "fem/cholmod_solver.h"
 #include "fem/conjugate_gradient.h"
+#include "fem/preconditioner.h"
 
 namespace homesh {
 namespace {
 
 using Matrix = Eigen::SparseMatrix<double>;
 
-LinearSolveResult ldlt(const Matrix& K, const Eigen::VectorXd& b, const LinearSolverOptions&,
-                       const Eigen::VectorXd&) {
-  const Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver(K);
-  if (solver.info() != Eigen::Success)
-    throw Error("solve_linear_system: ldlt factorisation failed (matrix not positive definite?)");
-  return {solver.solve(b), 0, 0.0};
-}
+// One method: analyse a pattern, factorise a matrix of it, solve.
+struct Backend {
+  virtual ~Backend() = default;
+  virtual void analyze(const Matrix& K) = 0;
+  virtual void factorize(const Matrix& K) = 0;
+  virtual LinearSolveResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) const = 0;
+};
 
-LinearSolveResult cholmod(const Matrix& K, const Eigen::VectorXd& b, const LinearSolverOptions&,
-                          const Eigen::VectorXd&) {
-  return {cholmod_solve(K, b), 0, 0.0};
-}
+struct Ldlt : Backend {
+  Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
+  void analyze(const Matrix& K) override { solver.analyzePattern(K); }
+  void factorize(const Matrix& K) override {
+    solver.factorize(K);
+    if (solver.info() != Eigen::Success)
+      throw Error("solve_linear_system: ldlt factorisation failed (matrix not positive definite?)");
+  }
+  LinearSolveResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd&) const override {
+    return {solver.solve(b), 0, 0.0};
+  }
+};
 
-LinearSolveResult cg(const Matrix& K, const Eigen::VectorXd& b,
-                     const LinearSolverOptions& options, const Eigen::VectorXd& guess) {
-  const int limit = options.max_iterations > 0 ? options.max_iterations : static_cast<int>(b.size());
-  ConjugateGradientResult r = conjugate_gradient(
-      K, b, guess, make_preconditioner(options.preconditioner, K), options.tolerance, limit);
-  if (!r.converged)
-    throw Error("solve_linear_system: cg with " + options.preconditioner +
-                " did not converge in " + std::to_string(r.iterations) +
-                " iterations (relative residual " + std::to_string(r.relative_residual) + ")");
-  return {std::move(r.x), r.iterations, r.relative_residual};
-}
+struct Cholmod : Backend {
+  CholmodFactor factor;
+  void analyze(const Matrix& K) override { factor.analyze(K); }
+  void factorize(const Matrix& K) override {
+    try {
+      factor.factorize(K);
+    } catch (const Error& e) {
+      throw Error(std::string("solve_linear_system: ") + e.what());
+    }
+  }
+  LinearSolveResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd&) const override {
+    return {factor.solve(b), 0, 0.0};
+  }
+};
 
-using Method = LinearSolveResult (*)(const Matrix&, const Eigen::VectorXd&,
-                                     const LinearSolverOptions&, const Eigen::VectorXd&);
+struct Cg : Backend {
+  LinearSolverOptions options;
+  Matrix full;
+  Preconditioner M;
+  explicit Cg(LinearSolverOptions o) : options(std::move(o)) {}
+  void analyze(const Matrix&) override {}
+  void factorize(const Matrix& K) override {
+    full = K.selfadjointView<Eigen::Lower>();
+    M = make_preconditioner(options.preconditioner, full);
+  }
+  LinearSolveResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) const override {
+    const int limit =
+        options.max_iterations > 0 ? options.max_iterations : static_cast<int>(b.size());
+    ConjugateGradientResult r =
+        conjugate_gradient(full, b, guess, M, options.tolerance, limit);
+    if (!r.converged)
+      throw Error("solve_linear_system: cg with " + options.preconditioner +
+                  " did not converge in " + std::to_string(r.iterations) +
+                  " iterations (relative residual " + std::to_string(r.relative_residual) + ")");
+    return {std::move(r.x), r.iterations, r.relative_residual};
+  }
+};
 
-// The one list of solvers: name and function.
-const std::vector<std::pair<std::string, Method>>& registry() {
-  static const std::vector<std::pair<std::string, Method>> entries = {
-      {"ldlt", ldlt}, {"cholmod", cholmod}, {"cg", cg}};
+using Factory = std::unique_ptr<Backend> (*)(const LinearSolverOptions&);
+
+// The one list of solvers: name and factory.
+const std::vector<std::pair<std::string, Factory>>& registry() {
+  static const std::vector<std::pair<std::string, Factory>> entries = {
+      {"cholmod", [](const LinearSolverOptions&) -> std::unique_ptr<Backend> {
+         return std::make_unique<Cholmod>();
+       }},
+      {"ldlt", [](const LinearSolverOptions&) -> std::unique_ptr<Backend> {
+         return std::make_unique<Ldlt>();
+       }},
+      {"cg", [](const LinearSolverOptions& o) -> std::unique_ptr<Backend> {
+         return std::make_unique<Cg>(o);
+       }}};
   return entries;
 }
 
@@ -59,25 +102,86 @@ const std::vector<std::string>& linear_solver_names() {
   return names;
 }
 
-LinearSolveResult solve_linear_system(const Matrix& K, const Eigen::VectorXd& b,
-                                      const LinearSolverOptions& options,
-                                      const Eigen::VectorXd& guess) {
-  if (K.rows() != K.cols() || K.rows() != b.size())
+struct LinearSolver::State {
+  std::unique_ptr<Backend> backend;
+  const Matrix* K = nullptr;
+  // The pattern of the last analysis (outer starts, inner indices).
+  std::vector<int> outer, inner;
+  int analyses = 0;
+};
+
+LinearSolver::LinearSolver(LinearSolverOptions options) : state_(std::make_unique<State>()) {
+  for (const auto& [name, factory] : registry())
+    if (name == options.method) state_->backend = factory(options);
+  if (!state_->backend) {
+    std::string list;
+    for (const std::string& n : linear_solver_names()) list += (list.empty() ? "" : ", ") + n;
+    throw Error("solve_linear_system: unknown method '" + options.method + "' (known: " + list +
+                ")");
+  }
+}
+
+LinearSolver::~LinearSolver() = default;
+LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
+LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
+
+void LinearSolver::factorize(const Matrix& K) {
+  if (K.rows() != K.cols())
     throw Error("solve_linear_system: K is " + std::to_string(K.rows()) + " by " +
-                std::to_string(K.cols()) + ", b has " + std::to_string(b.size()) + " entries");
+                std::to_string(K.cols()));
+  if (!K.isCompressed()) throw Error("solve_linear_system: K must be in compressed storage");
+  State& s = *state_;
+  const int* outer = K.outerIndexPtr();
+  const int* inner = K.innerIndexPtr();
+  const bool same = s.analyses > 0 && s.outer.size() == static_cast<size_t>(K.cols() + 1) &&
+                    std::equal(s.outer.begin(), s.outer.end(), outer) &&
+                    std::equal(s.inner.begin(), s.inner.end(), inner);
+  s.K = nullptr;
+  if (!same) {
+    s.backend->analyze(K);
+    s.outer.assign(outer, outer + K.cols() + 1);
+    s.inner.assign(inner, inner + K.nonZeros());
+    ++s.analyses;
+  }
+  s.backend->factorize(K);
+  s.K = &K;
+}
+
+LinearSolveResult LinearSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) const {
+  const State& s = *state_;
+  if (!s.K) throw Error("solve_linear_system: nothing factorised");
+  if (s.K->rows() != b.size())
+    throw Error("solve_linear_system: K is " + std::to_string(s.K->rows()) + " by " +
+                std::to_string(s.K->cols()) + ", b has " + std::to_string(b.size()) + " entries");
   if (guess.size() != 0 && guess.size() != b.size())
     throw Error("solve_linear_system: guess has " + std::to_string(guess.size()) + " entries, b " +
                 std::to_string(b.size()));
-  for (const auto& [name, method] : registry()) {
-    if (name != options.method) continue;
-    LinearSolveResult result = method(K, b, options, guess);
-    const double b_norm = b.norm();
-    result.relative_residual = b_norm > 0.0 ? (b - K * result.x).norm() / b_norm : 0.0;
-    return result;
+  LinearSolveResult result = s.backend->solve(b, guess);
+  const double b_norm = b.norm();
+  if (b_norm > 0.0) {
+    Eigen::VectorXd r = b;
+    r.noalias() -= s.K->selfadjointView<Eigen::Lower>() * result.x;
+    result.relative_residual = r.norm() / b_norm;
   }
-  std::string list;
-  for (const std::string& n : linear_solver_names()) list += (list.empty() ? "" : ", ") + n;
-  throw Error("solve_linear_system: unknown method '" + options.method + "' (known: " + list + ")");
+  return result;
+}
+
+int LinearSolver::analyses() const { return state_->analyses; }
+
+LinearSolveResult solve_linear_system(const Matrix& K, const Eigen::VectorXd& b,
+                                      const LinearSolverOptions& options,
+                                      const Eigen::VectorXd& guess) {
+  LinearSolver solver(options);
+  if (K.rows() != b.size())
+    throw Error("solve_linear_system: K is " + std::to_string(K.rows()) + " by " +
+                std::to_string(K.cols()) + ", b has " + std::to_string(b.size()) + " entries");
+  if (K.isCompressed()) {
+    solver.factorize(K);
+    return solver.solve(b, guess);
+  }
+  const Matrix compressed = K;
+  solver.factorize(compressed);
+  return solver.solve(b, guess);
 }
 
 }  // namespace homesh

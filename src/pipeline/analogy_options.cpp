@@ -19,7 +19,7 @@ std::vector<OptionSpec> analogy_option_specs(const std::string& default_formulat
           {"nu", "0.4", "Poisson's ratio, in (-1, 0.5)"},
           {"heat", "1", "scale of the added force/heat terms (> 0 expands hot elements)"},
           {"power", "1", "stiff_q17: E = (min Q17/max Q17)^-power (thesis: 1)"},
-          {"solver", "ldlt", "linear solver: " + joined(linear_solver_names())},
+          {"solver", "cholmod", "linear solver: " + joined(linear_solver_names())},
           {"preconditioner", "ichol", "CG preconditioner: " + joined(preconditioner_names())}};
 }
 

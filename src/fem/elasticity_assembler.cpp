@@ -1,0 +1,295 @@
+#include "fem/elasticity_assembler.h"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "core/error.h"
+#include "fem/element_geometry.h"
+#include "fem/element_load.h"
+#include "fem/element_stiffness.h"
+
+namespace homesh {
+namespace {
+
+// Elements incident to each node, as offsets into a flat list (CSR).
+struct Incidence {
+  std::vector<int> start, element;
+};
+
+Incidence node_elements(const Eigen::MatrixXi& tri, int num_nodes) {
+  Incidence inc;
+  inc.start.assign(num_nodes + 1, 0);
+  for (Eigen::Index k = 0; k < tri.size(); ++k) ++inc.start[tri.data()[k] + 1];
+  std::partial_sum(inc.start.begin(), inc.start.end(), inc.start.begin());
+  inc.element.resize(tri.size());
+  std::vector<int> next(inc.start.begin(), inc.start.end() - 1);
+  for (Eigen::Index e = 0; e < tri.cols(); ++e)
+    for (Eigen::Index i = 0; i < tri.rows(); ++i) inc.element[next[tri(i, e)]++] = int(e);
+  return inc;
+}
+
+// Greedy colouring: each element takes the smallest colour none of the
+// elements sharing one of its nodes has taken.
+std::vector<std::vector<int>> colour_elements(const Eigen::MatrixXi& tri, const Incidence& inc) {
+  std::vector<int> colour(tri.cols(), -1), stamp;
+  std::vector<std::vector<int>> classes;
+  for (int e = 0; e < int(tri.cols()); ++e) {
+    for (Eigen::Index i = 0; i < tri.rows(); ++i)
+      for (int k = inc.start[tri(i, e)]; k < inc.start[tri(i, e) + 1]; ++k) {
+        const int c = colour[inc.element[k]];
+        if (c >= 0) stamp[c] = e;
+      }
+    int c = 0;
+    while (c < int(stamp.size()) && stamp[c] == e) ++c;
+    if (c == int(stamp.size())) {
+      stamp.push_back(-1);
+      classes.emplace_back();
+    }
+    colour[e] = c;
+    classes[c].push_back(e);
+  }
+  return classes;
+}
+
+// Sorted neighbours (nodes sharing an element, itself excluded) of every node.
+std::vector<std::vector<int>> node_neighbours(const Eigen::MatrixXi& tri, const Incidence& inc) {
+  const int num_nodes = int(inc.start.size()) - 1;
+  std::vector<std::vector<int>> out(num_nodes);
+  std::vector<int> stamp(num_nodes, -1);
+  for (int i = 0; i < num_nodes; ++i) {
+    stamp[i] = i;
+    for (int k = inc.start[i]; k < inc.start[i + 1]; ++k)
+      for (Eigen::Index a = 0; a < tri.rows(); ++a) {
+        const int j = tri(a, inc.element[k]);
+        if (stamp[j] != i) {
+          stamp[j] = i;
+          out[i].push_back(j);
+        }
+      }
+    std::sort(out[i].begin(), out[i].end());
+  }
+  return out;
+}
+
+// A compressed pattern from its columns' sorted row lists, values zero.
+Eigen::SparseMatrix<double> compressed(int size, const std::vector<int>& outer,
+                                       const std::vector<int>& inner) {
+  Eigen::SparseMatrix<double> K(size, size);
+  K.resizeNonZeros(Eigen::Index(inner.size()));
+  std::copy(outer.begin(), outer.end(), K.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), K.innerIndexPtr());
+  std::fill_n(K.valuePtr(), inner.size(), 0.0);
+  return K;
+}
+
+// Dof 2 node + component. Lower: every diagonal, and (r, c), r > c, for free
+// dofs r, c of nodes sharing an element. Coupling: (r, c), r free, c fixed.
+void dof_patterns(const std::vector<std::vector<int>>& neighbours, const std::vector<char>& fixed,
+                  Eigen::SparseMatrix<double>& lower, Eigen::SparseMatrix<double>& coupling) {
+  const int num_dofs = int(fixed.size());
+  std::vector<int> outer(num_dofs + 1, 0), inner, c_outer(num_dofs + 1, 0), c_inner;
+  for (int i = 0; i < num_dofs / 2; ++i) {
+    for (int comp = 0; comp < 2; ++comp) {
+      const int col = 2 * i + comp, other = 2 * i + 1 - comp;
+      inner.push_back(col);
+      if (!fixed[col]) {
+        if (comp == 0 && !fixed[other]) inner.push_back(other);
+        for (int j : neighbours[i])
+          for (int rc = 0; rc < 2; ++rc)
+            if (j > i && !fixed[2 * j + rc]) inner.push_back(2 * j + rc);
+      } else {
+        bool own = !fixed[other];
+        for (int j : neighbours[i]) {
+          if (own && j > i) {
+            c_inner.push_back(other);
+            own = false;
+          }
+          for (int rc = 0; rc < 2; ++rc)
+            if (!fixed[2 * j + rc]) c_inner.push_back(2 * j + rc);
+        }
+        if (own) c_inner.push_back(other);
+      }
+      outer[col + 1] = int(inner.size());
+      c_outer[col + 1] = int(c_inner.size());
+    }
+  }
+  lower = compressed(num_dofs, outer, inner);
+  coupling = compressed(num_dofs, c_outer, c_inner);
+}
+
+// Per-thread workspace of the element loop.
+struct Workspace {
+  Eigen::Matrix2Xd X;
+  ElementGeometry geometry;
+  Eigen::VectorXd lambda, mu, fe;
+  Eigen::Matrix2Xd f;
+  Eigen::Matrix3Xd sigma_t;
+  Eigen::MatrixXd Ke, scratch;
+  std::vector<int> dof, order;
+};
+
+// Lame's constants, body force and thermal stress (xx, yy, xy) at the points.
+void evaluate(const ElasticityCoefficients& c, int e, Workspace& w) {
+  const Eigen::Index nq = w.geometry.x.cols();
+  w.lambda.resize(nq);
+  w.mu.resize(nq);
+  w.f.resize(2, nq);
+  w.sigma_t.resize(3, nq);
+  for (Eigen::Index q = 0; q < nq; ++q) {
+    const QuadraturePoint point{e, static_cast<int>(q), w.geometry.x.col(q)};
+    const Lame lame = lame_plane_strain(c.young(point), c.poisson(point));
+    w.lambda(q) = lame.lambda;
+    w.mu(q) = lame.mu;
+    w.f.col(q) = c.body_force(point);
+    const double s = c.beta(point) * (c.temperature(point) - c.reference_temperature);  // Eq 4.5
+    const Eigen::Matrix2d S = c.anisotropic_stress(point);
+    w.sigma_t.col(q) << s + S(0, 0), s + S(1, 1), 0.5 * (S(0, 1) + S(1, 0));
+  }
+}
+
+}  // namespace
+
+ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& fixed_dofs,
+                                         const AssemblyOptions& options)
+    : tri_(m.tri) {
+  const int n = triangle_node_count(m.order);
+  if (m.tri.rows() != n)
+    throw Error("assemble_elasticity: " + std::to_string(m.tri.rows()) +
+                " nodes per triangle for order " + std::to_string(m.order));
+  tab_ = tabulate_element(m.order, stiffness_quadrature_degree(m.order, options.quadrature_margin));
+  const int num_nodes = m.num_nodes();
+  fixed_.assign(2 * num_nodes, 0);
+  for (int j : fixed_dofs) {
+    if (j < 0 || j >= 2 * num_nodes)
+      throw Error("apply_dirichlet: dof " + std::to_string(j) + " out of range 0.." +
+                  std::to_string(2 * num_nodes - 1));
+    fixed_[j] = 1;
+  }
+  used_.assign(num_nodes, 0);
+  for (Eigen::Index k = 0; k < tri_.size(); ++k) used_[tri_.data()[k]] = 1;
+  const Incidence inc = node_elements(tri_, num_nodes);
+  colours_ = colour_elements(tri_, inc);
+  dof_patterns(node_neighbours(tri_, inc), fixed_, pattern_, coupling_pattern_);
+}
+
+namespace {
+
+// Whether K has exactly the pattern P (compressed).
+bool same_pattern(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& P) {
+  return K.rows() == P.rows() && K.cols() == P.cols() && K.isCompressed() &&
+         K.nonZeros() == P.nonZeros() &&
+         std::equal(P.outerIndexPtr(), P.outerIndexPtr() + P.cols() + 1, K.outerIndexPtr()) &&
+         std::equal(P.innerIndexPtr(), P.innerIndexPtr() + P.nonZeros(), K.innerIndexPtr());
+}
+
+void reset(Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& P) {
+  if (same_pattern(K, P))
+    std::fill_n(K.valuePtr(), K.nonZeros(), 0.0);
+  else
+    K = P;
+}
+
+}  // namespace
+
+void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCoefficients& c,
+                                   EliminatedSystem& sys) const {
+  const int num_dofs = this->num_dofs();
+  if (x.cols() * 2 != num_dofs)
+    throw Error("assemble_elasticity: " + std::to_string(x.cols()) + " positions for " +
+                std::to_string(num_dofs / 2) + " nodes");
+  reset(sys.K, pattern_);
+  reset(sys.coupling, coupling_pattern_);
+  sys.load = Eigen::VectorXd::Zero(num_dofs);
+  const int n = int(tri_.rows());
+  const int *outer = sys.K.outerIndexPtr(), *inner = sys.K.innerIndexPtr();
+  const int *c_outer = sys.coupling.outerIndexPtr(), *c_inner = sys.coupling.innerIndexPtr();
+  double* value = sys.K.valuePtr();
+  double* c_value = sys.coupling.valuePtr();
+  std::string failure;
+  int failed_element = -1;
+
+  for (const std::vector<int>& colour : colours_) {
+#pragma omp parallel
+    {
+      Workspace w;
+      w.X.resize(2, n);
+      w.dof.resize(2 * n);
+      w.order.resize(2 * n);
+#pragma omp for schedule(dynamic, 32)
+      for (std::size_t k = 0; k < colour.size(); ++k) {
+        const int e = colour[k];
+        try {
+          for (int i = 0; i < n; ++i) {
+            w.X.col(i) = x.col(tri_(i, e));
+            // Element dof (c, i) at c n + i (Eq 4.14) is global dof 2 node + c.
+            w.dof[i] = 2 * tri_(i, e);
+            w.dof[n + i] = 2 * tri_(i, e) + 1;
+          }
+          element_geometry(w.X, tab_, w.geometry);
+          evaluate(c, e, w);
+          element_stiffness_lower(w.geometry, w.lambda, w.mu, w.Ke, w.scratch);
+          element_load(w.geometry, tab_.N, w.f, w.sigma_t, w.fe);
+        } catch (const std::exception& error) {
+#pragma omp critical(homesh_assembly_failure)
+          if (failed_element < 0 || e < failed_element) {
+            failed_element = e;
+            failure = error.what();
+          }
+          continue;
+        }
+        // Ke is exact in its lower triangle: entry (a, b) is read from there.
+        auto ke = [&](int a, int b) { return a >= b ? w.Ke(a, b) : w.Ke(b, a); };
+        std::iota(w.order.begin(), w.order.end(), 0);
+        std::sort(w.order.begin(), w.order.end(),
+                  [&](int a, int b) { return w.dof[a] < w.dof[b]; });
+        // Each column's rows ascending, merged with the element's sorted dofs.
+        for (int s = 0; s < 2 * n; ++s) {
+          const int b = w.order[s], col = w.dof[b];
+          if (fixed_[col]) {
+            value[outer[col]] += w.Ke(b, b);  // the diagonal heads its column
+            int p = c_outer[col];
+            for (int t = 0; t < 2 * n; ++t) {
+              const int a = w.order[t], row = w.dof[a];
+              if (fixed_[row]) continue;
+              while (c_inner[p] != row) ++p;
+              c_value[p] += ke(a, b);
+            }
+            continue;
+          }
+          sys.load(col) += w.fe(b);
+          int p = outer[col];
+          for (int t = s; t < 2 * n; ++t) {
+            const int a = w.order[t], row = w.dof[a];
+            if (fixed_[row]) continue;
+            while (inner[p] != row) ++p;
+            value[p] += ke(a, b);
+          }
+        }
+      }
+    }
+    if (failed_element >= 0)
+      throw Error("assemble_elasticity: triangle " + std::to_string(failed_element) + ": " +
+                  failure);
+  }
+  for (int j = 0; j < num_dofs; ++j) {
+    double& diagonal = value[outer[j]];
+    if (!used_[j / 2] || (fixed_[j] && diagonal == 0.0)) diagonal = 1.0;
+  }
+}
+
+Eigen::VectorXd ElasticityAssembler::rhs(const EliminatedSystem& sys,
+                                         const Eigen::VectorXd& g) const {
+  if (g.size() != num_dofs())
+    throw Error("assemble_elasticity: " + std::to_string(g.size()) + " prescribed values for " +
+                std::to_string(num_dofs()) + " dofs");
+  Eigen::VectorXd b = sys.load;
+  b.noalias() -= sys.coupling * g;
+  const int* outer = sys.K.outerIndexPtr();
+  for (int j = 0; j < num_dofs(); ++j)
+    if (fixed_[j]) b(j) = sys.K.valuePtr()[outer[j]] * g(j);
+  return b;
+}
+
+}  // namespace homesh

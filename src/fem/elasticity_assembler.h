@@ -1,0 +1,66 @@
+#pragma once
+// Repeated assembly of the elastic analogy (thesis Eqs 4.10-4.15) on one mesh
+// connectivity with one set of prescribed dofs, as a deformation in load
+// increments needs it: the sparsity pattern, the element colouring and the
+// basis tabulation are built once; each assembly refills the values of the
+// fixed pattern in parallel (OpenMP, one colour at a time, so that no two
+// threads add into the same entry) without allocating per element.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "core/mesh.h"
+#include "fem/assemble_elasticity.h"
+#include "fem/elasticity_coefficients.h"
+#include "fem/element_tabulation.h"
+
+namespace homesh {
+
+/// The assembled system with the prescribed dofs eliminated as apply_dirichlet
+/// (fem/dirichlet.h) does it, the parts kept apart so that new prescribed
+/// values need only a new right-hand side (ElasticityAssembler::rhs).
+struct EliminatedSystem {
+  /// Lower triangle: the free-free entries of sum_e Ke, and every diagonal
+  /// (fixed dof j: sum_e (Ke)_jj, 1 if no element holds it; free dofs of nodes
+  /// in no triangle: 1). Always the assembler's pattern.
+  Eigen::SparseMatrix<double> K;
+  /// The free-fixed block of sum_e Ke: rows free dofs, columns fixed dofs.
+  Eigen::SparseMatrix<double> coupling;
+  /// sum_e fe at free dofs, 0 at fixed ones.
+  Eigen::VectorXd load;
+};
+
+class ElasticityAssembler {
+ public:
+  /// The connectivity of m (order, tri, #nodes; its coordinates are not used)
+  /// and the prescribed dofs (2 node + component, as LinearSystem; repeats allowed).
+  /// Throws homesh::Error if tri does not fit the order or a dof is out of range.
+  ElasticityAssembler(const Mesh& m, const std::vector<int>& fixed_dofs,
+                      const AssemblyOptions& options = {});
+
+  /// Refills sys for positions x (2 by #nodes) and coefficients c evaluated at
+  /// the quadrature points as in assemble_elasticity. Throws homesh::Error
+  /// naming the triangle if an element is invalid or a coefficient out of range.
+  void assemble(const Eigen::Matrix2Xd& x, const ElasticityCoefficients& c,
+                EliminatedSystem& sys) const;
+
+  /// The right-hand side for prescribed values g (2 #nodes, read at fixed dofs):
+  /// load - coupling g at free dofs, K_jj g_j at fixed dofs (so x_j = g_j).
+  Eigen::VectorXd rhs(const EliminatedSystem& sys, const Eigen::VectorXd& g) const;
+
+  int num_dofs() const { return static_cast<int>(fixed_.size()); }
+  const std::vector<char>& fixed() const { return fixed_; }
+  /// Colour classes: elements of one class share no node.
+  const std::vector<std::vector<int>>& colours() const { return colours_; }
+
+ private:
+  Eigen::MatrixXi tri_;
+  ElementTabulation tab_;
+  std::vector<char> fixed_;  // per dof
+  std::vector<char> used_;   // per node: in some triangle
+  std::vector<std::vector<int>> colours_;
+  // Patterns (values unused): lower free-free plus diagonal; free-fixed.
+  Eigen::SparseMatrix<double> pattern_, coupling_pattern_;
+};
+
+}  // namespace homesh
