@@ -117,6 +117,7 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
   const RoomResult room = open_room(split.mesh, moving, target, fixed, opt.room);
   r.push_steps = room.steps;
   r.solves = room.solves;
+  r.smoothed = room.smoothed;
   if (!room.complete) {
     const int b = std::max(room.bottleneck, 0);
     throw Error("layers: cannot open a room " + number_text(d[n]) + " thick for " +

@@ -65,6 +65,7 @@ struct LayerResult {
   double thickness = 0;    ///< d_n
   int push_steps = 0;      ///< accepted elastic steps opening the room
   int solves = 0;          ///< elasticity solves
+  int smoothed = 0;        ///< node moves repairing triangles the push squeezed (open_room.h)
   bool from_corners = false;  ///< the input was of order > 1
   int sharpest_node = -1;     ///< wall node with the largest domain angle
   double sharpest_angle = 0;  ///< its domain angle, radians

@@ -9,6 +9,7 @@
 #include "fem/solve_elasticity.h"
 #include "layers/edge_flips.h"
 #include "layers/plane_geometry.h"
+#include "layers/star_smoothing.h"
 #include "quality/mesh_validity.h"
 
 namespace homesh {
@@ -104,6 +105,13 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
     }
     if (!accepted) break;
     ++r.steps;
+  }
+  if (r.complete && opt.smoothing) {
+    std::vector<bool> free(fixed.size());
+    for (int i = 0; i < m.num_nodes(); ++i) free[i] = !fixed[i];
+    for (int k = 0; k < count; ++k) free[moving[k]] = false;
+    r.smoothed = smooth_stars(current, free, star_quality(m));
+    if (r.smoothed > 0 && opt.flips) flip_edges(current);
   }
   r.mesh = std::move(current);
   return r;

@@ -15,6 +15,8 @@
 // current mesh the result must be certified valid, else the step is halved.
 // After each accepted step, edges flip where that raises the worst radius ratio
 // (edge_flips.h): the triangles keep their number and surface, not their nodes.
+// Once the front is in place, the free nodes whose triangles the push left worse
+// than they were in the input are smoothed (star_smoothing.h), then flipped again.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -34,6 +36,7 @@ struct RoomOptions {
   int max_steps = 200;   ///< accepted steps before giving up
   int max_halvings = 8;  ///< halvings of a failing step before giving up
   bool flips = true;     ///< flip edges after each step (edge_flips.h)
+  bool smoothing = true; ///< smooth the squeezed free nodes at the end (star_smoothing.h)
   LinearSolverOptions solver;
 };
 
@@ -44,6 +47,7 @@ struct RoomResult {
   int steps = 0;          ///< accepted steps
   int solves = 0;         ///< elasticity solves, rejected ones included
   int bottleneck = -1;    ///< index into `moving` of the node that set the last step
+  int smoothed = 0;       ///< node moves of the final smoothing
 };
 
 /// delta: how far `node` of m can move along the unit direction d before it

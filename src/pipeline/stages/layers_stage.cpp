@@ -54,19 +54,22 @@ void run(Context& ctx, const Options& opt) {
   ctx.log.info("layers: {} layers on {} ({} loop(s), {} wall edges, {} fans), thickness {:.6g} "
                "(first {:g}, ratio {:g})", o.layers, walls, r.loops,
                r.wall_edges, r.fan_nodes, r.thickness, o.first, o.ratio);
-  ctx.log.info("layers: room opened in {} elastic step(s) (formulation {}, nu {:g}); {} -> {} "
-               "triangles, {} -> {} nodes", r.push_steps, o.room.formulation, o.room.params.poisson,
-               triangles, m.num_triangles(), nodes, m.num_nodes());
-  double worst = 1, sum = 0;
+  ctx.log.info("layers: room opened in {} elastic step(s) (formulation {}, nu {:g}), {} node "
+               "move(s) smoothing squeezed triangles; {} -> {} triangles, {} -> {} nodes",
+               r.push_steps, o.room.formulation, o.room.params.poisson, r.smoothed, triangles,
+               m.num_triangles(), nodes, m.num_nodes());
+  double worst = 1, sum = 0, others = 1;
   int count = 0;
   for (int e = 0; e < m.num_triangles(); ++e)
     if (r.layer[e] > 0) {
       worst = std::min(worst, q(e));
       sum += q(e);
       ++count;
+    } else {
+      others = std::min(others, q(e));
     }
-  ctx.log.info("layers: radius ratio Q (Eq 4.17) of the {} layer triangles: min {:.4f}, mean {:.4f}",
-               count, worst, sum / std::max(count, 1));
+  ctx.log.info("layers: radius ratio Q (Eq 4.17) of the {} layer triangles: min {:.4f}, mean {:.4f}; "
+               "of the other triangles: min {:.4f}", count, worst, sum / std::max(count, 1), others);
   double corner_worst = 1;
   for (int e : corner) corner_worst = std::min(corner_worst, q(e));
   const double degrees = r.sharpest_angle * 180 / M_PI;
