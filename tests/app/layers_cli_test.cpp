@@ -130,3 +130,37 @@ TEST_CASE("layers: refusals name the cause", "[app]") {
   CHECK(r.output.find("normals=many: expected single or multi") != std::string::npos);
   remove_output(out);
 }
+
+namespace {
+
+// theta_max (degrees, clockwise) of the coarse quadratic NACA-7526 boundary-layer mesh of
+// scripts/naca_rotation.py (thesis Section 4.4.2) turned about its quarter chord, nu = 0.25.
+int naca_theta_max(const std::string& fan, const std::string& formulation) {
+  const auto r = run_homesh(geo + "naca7526_rotation.geo -m mesh -m layers:walls=aerofoil:n=2:"
+                            "first=0.02:ratio=1.2" + fan + " -m curve:p=2 -m rotate:wall=aerofoil:"
+                            "centre=0.25,0:step=-1:max=90:nu=0.25:" + formulation +
+                            " /tmp/homesh_layers_naca_rotation.msh");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(r.output, m, std::regex(R"(rotate: theta_max = (\d+) deg)")));
+  remove_output("/tmp/homesh_layers_naca_rotation.msh");
+  return std::stoi(m[1]);
+}
+
+}  // namespace
+
+TEST_CASE("layers: NACA-7526 rotation - 5 normals at the trailing edge turn further (Sec 4.4.2)",
+          "[app]") {
+  // The first element to fold is at the trailing edge, where the fan of 5 normals leaves
+  // better-shaped elements: the thesis' 62 vs 22 degrees (T = 1/Ae) and 125 vs 85 (metric).
+  // Measured: plain analogy 8 (single) and 17 (fan); T = 1/Ae at heat 0.01: 24 (single).
+  const int single = naca_theta_max("", "formulation=plain");
+  const int fan = naca_theta_max(":normals=multi:fan=5:fan_angle=320", "formulation=plain");
+  CHECK(single >= 5);
+  CHECK(fan >= single + 5);
+  // T = 1/Ae (thesis case 1) heats the small layer and trailing-edge elements: it turns
+  // the single-normal mesh much further than the plain analogy.
+  const int area = naca_theta_max("", "formulation=heat_area:heat=0.01");
+  CHECK(area >= 2 * single);
+}
