@@ -1,4 +1,5 @@
-// The curve stage run as a user does: boundary nodes on the CAD, certified valid.
+// The curve stage run as a user does: boundary nodes on the CAD (or on splines rebuilt from a
+// bare .msh), certified valid.
 #include <gmsh.h>
 
 #include <catch2/catch.hpp>
@@ -60,4 +61,52 @@ TEST_CASE("curve: NACA-7526 at order 4, valid, with a bad option refused", "[app
   REQUIRE(r.output.find("nu must be in (-1, 0.5)") != std::string::npos);
   std::remove(out.c_str());
   std::remove((out + ".opt").c_str());
+}
+
+TEST_CASE("curve: a bare .msh is curved onto splines rebuilt from its linear boundary", "[app]") {
+  const std::string lin = "/tmp/homesh_curve_nocad_lin.msh", out = "/tmp/homesh_curve_nocad.msh";
+  auto r = run_homesh(geo + "plate_hole.geo -m mesh " + lin);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  r = run_homesh(lin + " -m curve:p=3 -m quality " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("no CAD in " + lin +
+                        ": boundary rebuilt from the linear mesh (cubic spline, corners > 40 deg "
+                        "kept sharp): 1 closed loops, 4 open chains, 0 corners") !=
+          std::string::npos);
+  REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
+  {
+    homesh::test::GmshSession session;
+    gmsh::open(out);
+    const homesh::Mesh m = homesh::gmsh_adapter::read_model(out);
+    REQUIRE(m.order == 3);
+    // Hole: 32 segments of the default mesh (h = 0.1 on radius 0.5), every node
+    // within 2e-6 of the true circle (measured 1.5e-6; a chord's sagitta is
+    // 2.4e-3). The square's sides are four curves: their corners end chains by
+    // entity, so none counts as an angle corner.
+    double hole = 0, square = 0;
+    int on_hole = 0, on_square = 0;
+    for (int k = 0; k < m.num_lines(); ++k) {
+      const Eigen::Vector2d a = m.x.col(m.line(0, k));
+      if (std::abs(a.norm() - 0.5) < 1e-9) {
+        ++on_hole;
+        for (int j = 0; j <= 3; ++j)
+          hole = std::max(hole, std::abs(m.x.col(m.line(j, k)).norm() - 0.5));
+      } else {
+        ++on_square;
+        for (int j = 0; j <= 3; ++j)
+          square = std::max(square, std::abs(m.x.col(m.line(j, k)).cwiseAbs().maxCoeff() - 1));
+      }
+    }
+    INFO("hole " << on_hole << " lines, worst distance " << hole << "; square worst " << square);
+    REQUIRE(on_hole == 32);
+    REQUIRE(on_square > 0);
+    REQUIRE(hole < 2e-6);
+    REQUIRE(square < 1e-14);
+  }
+  r = run_homesh(lin + " -m curve:p=3:corner=180 " + out);
+  REQUIRE(r.exit_code != 0);
+  REQUIRE(r.output.find("corner = 180 must be in (0, 180) degrees") != std::string::npos);
+  for (const std::string& f : {lin, lin + ".opt", out, out + ".opt"}) std::remove(f.c_str());
 }

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/raise_order.h"
+#include "curving/boundary_reconstruction.h"
 #include "curving/deform_mesh.h"
 #include "pipeline/analogy_options.h"
 #include "gmsh/cad_boundary.h"
@@ -12,12 +13,33 @@
 namespace homesh {
 namespace {
 
+// Boundary targets on splines rebuilt from the linear boundary, said in the log
+// and in ctx.results (boundary_rebuilt = 1, corner_degrees, the chain counts).
+Eigen::Matrix2Xd rebuilt_boundary(Context& ctx, const Mesh& raised, double corner) {
+  if (raised.num_lines() == 0)
+    throw Error("stage 'curve': " + ctx.input +
+                " has no CAD and no boundary lines to rebuild curves from");
+  BoundaryReconstructionOptions b;
+  b.corner_degrees = corner;
+  const BoundaryReconstruction r = reconstruct_boundary(raised, b);
+  ctx.log.info(
+      "curve: no CAD in {}: boundary rebuilt from the linear mesh (cubic spline, corners > {:g} "
+      "deg kept sharp): {} closed loops, {} open chains, {} corners",
+      ctx.input, corner, r.closed_loops, r.chains, r.corners);
+  ctx.results["boundary_rebuilt"] = 1;
+  ctx.results["corner_degrees"] = corner;
+  ctx.results["rebuilt_closed_loops"] = r.closed_loops;
+  ctx.results["rebuilt_chains"] = r.chains;
+  ctx.results["rebuilt_corners"] = r.corners;
+  return r.target;
+}
+
 void run(Context& ctx, const Options& opt) {
   Mesh& m = ctx.require_mesh("curve");
-  if (!ctx.has_cad)
-    throw Error("stage 'curve': " + ctx.input +
-                " has no CAD curves to curve onto (give the .geo/.step/.brep)");
   const int p = opt.get_int("p", 2, kMaxOrder);
+  const double corner = opt.get_double("corner");
+  if (!(corner > 0 && corner < 180))
+    throw Error(fmt::format("stage 'curve': corner = {:g} must be in (0, 180) degrees", corner));
   const AnalogyChoice analogy = read_analogy_options(opt, "curve");
   DeformOptions d;
   d.formulation = analogy.formulation;
@@ -27,8 +49,12 @@ void run(Context& ctx, const Options& opt) {
 
   Mesh raised = raise_order(m, p);
   Eigen::Matrix2Xd target;
-  gmsh_adapter::gmsh_call("stage 'curve': placing nodes on the CAD of " + ctx.input,
-                          [&] { target = gmsh_adapter::place_on_cad(raised); });
+  if (ctx.has_cad) {
+    gmsh_adapter::gmsh_call("stage 'curve': placing nodes on the CAD of " + ctx.input,
+                            [&] { target = gmsh_adapter::place_on_cad(raised); });
+  } else {
+    target = rebuilt_boundary(ctx, raised, corner);
+  }
   const DeformResult r = deform_mesh(raised, target, boundary_nodes(raised), d);
   if (!r.complete)
     throw Error(fmt::format(
@@ -47,10 +73,14 @@ void run(Context& ctx, const Options& opt) {
 Stage curve_stage() {
   std::vector<OptionSpec> options = {
       {"p", "2", "element order, 2 to " + std::to_string(kMaxOrder)},
-      {"increments", "4", "load increments (halved where validity needs it)"}};
+      {"increments", "4", "load increments (halved where validity needs it)"},
+      {"corner", "40",
+       "without CAD (a .msh): boundary vertices turning more than this (degrees) stay sharp "
+       "corners of the rebuilt spline curves"}};
   for (auto& o : analogy_option_specs()) options.push_back(std::move(o));
   return {"curve",
-          "order p with boundary nodes on the CAD, interior by the elastic analogy, valid",
+          "order p with boundary nodes on the CAD (or on splines rebuilt from a bare .msh), "
+          "interior by the elastic analogy, valid",
           options, run};
 }
 
