@@ -24,7 +24,7 @@ analogy (E = 1, no added term; small heats tend to it) runs as the baseline of e
 Writes into --out (default out/naca_rotation): naca_rotation.csv (per case: thesis, ours at
 the best heat, the heat, ours plain), naca_rotation_sweep.csv (every run),
 naca_rotation.md (table and the thesis' orderings, ours beside) and naca_rotation.png.
-About 2 minutes (98 rotations of a 453-triangle quadratic mesh).
+About a minute (50 rotations of a 453-triangle quadratic mesh).
 
 Run from the repository root:
   PYTHONPATH=build/python /usr/bin/python3 scripts/naca_rotation.py [--quick]
