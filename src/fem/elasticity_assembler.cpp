@@ -210,14 +210,15 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
   std::string failure;
   int failed_element = -1;
 
-  for (const std::vector<int>& colour : colours_) {
+  // One team for all colours; the implicit barrier of each loop separates them.
 #pragma omp parallel
-    {
-      Workspace w;
-      w.X.resize(2, n);
-      w.dof.resize(2 * n);
-      w.order.resize(2 * n);
-#pragma omp for schedule(dynamic, 32)
+  {
+    Workspace w;
+    w.X.resize(2, n);
+    w.dof.resize(2 * n);
+    w.order.resize(2 * n);
+    for (const std::vector<int>& colour : colours_) {
+#pragma omp for schedule(static)
       for (std::size_t k = 0; k < colour.size(); ++k) {
         const int e = colour[k];
         try {
@@ -269,10 +270,10 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
         }
       }
     }
-    if (failed_element >= 0)
-      throw Error("assemble_elasticity: triangle " + std::to_string(failed_element) + ": " +
-                  failure);
   }
+  if (failed_element >= 0)
+    throw Error("assemble_elasticity: triangle " + std::to_string(failed_element) + ": " +
+                failure);
   for (int j = 0; j < num_dofs; ++j) {
     double& diagonal = value[outer[j]];
     if (!used_[j / 2] || (fixed_[j] && diagonal == 0.0)) diagonal = 1.0;
