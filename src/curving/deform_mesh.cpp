@@ -14,11 +14,81 @@ std::vector<bool> boundary_nodes(const Mesh& m) {
   return b;
 }
 
+std::vector<int> moving_region(const Mesh& m, const std::vector<bool>& moving, int layers) {
+  std::vector<bool> reached = moving, selected(m.num_triangles(), false);
+  for (int layer = 0; layer < layers; ++layer) {
+    for (int e = 0; e < m.num_triangles(); ++e)
+      for (int i = 0; i < m.tri.rows() && !selected[e]; ++i) selected[e] = reached[m.tri(i, e)];
+    for (int e = 0; e < m.num_triangles(); ++e)
+      if (selected[e])
+        for (int i = 0; i < m.tri.rows(); ++i) reached[m.tri(i, e)] = true;
+  }
+  std::vector<int> region;
+  for (int e = 0; e < m.num_triangles(); ++e)
+    if (selected[e]) region.push_back(e);
+  return region;
+}
+
+namespace {
+
+// deform_mesh on the submesh of moving_region: its nodes shared with the rest
+// of the mesh are held where they are.
+DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
+                           const std::vector<bool>& prescribed, const DeformOptions& opt) {
+  std::vector<bool> moving(m.num_nodes());
+  for (int i = 0; i < m.num_nodes(); ++i)
+    moving[i] = prescribed[i] && target.col(i) != m.x.col(i);
+  const std::vector<int> region = moving_region(m, moving, opt.layers);
+  if (region.empty()) return {m, 1.0, true, 0, 0, mesh_validity(m).worst, 0};
+  std::vector<bool> inside(m.num_triangles(), false), outside_node(m.num_nodes(), false);
+  for (int e : region) inside[e] = true;
+  for (int e = 0; e < m.num_triangles(); ++e)
+    if (!inside[e])
+      for (int i = 0; i < m.tri.rows(); ++i) outside_node[m.tri(i, e)] = true;
+  std::vector<int> local(m.num_nodes(), -1), global;
+  Mesh sub;
+  sub.order = m.order;
+  sub.tri.resize(m.tri.rows(), Eigen::Index(region.size()));
+  for (std::size_t k = 0; k < region.size(); ++k) {
+    for (int i = 0; i < m.tri.rows(); ++i) {
+      int& node = local[m.tri(i, region[k])];
+      if (node < 0) {
+        node = int(global.size());
+        global.push_back(m.tri(i, region[k]));
+      }
+      sub.tri(i, Eigen::Index(k)) = node;
+    }
+    if (!m.tri_entity.empty()) sub.tri_entity.push_back(m.tri_entity[region[k]]);
+  }
+  sub.x.resize(2, Eigen::Index(global.size()));
+  Eigen::Matrix2Xd sub_target(2, Eigen::Index(global.size()));
+  std::vector<bool> sub_prescribed(global.size());
+  for (std::size_t k = 0; k < global.size(); ++k) {
+    const int i = global[k];
+    sub.x.col(Eigen::Index(k)) = m.x.col(i);
+    sub.node_class.push_back(m.node_class[i]);
+    sub_prescribed[k] = prescribed[i] || outside_node[i];
+    sub_target.col(Eigen::Index(k)) = prescribed[i] ? target.col(i) : m.x.col(i);
+  }
+  DeformOptions whole = opt;
+  whole.layers = 0;
+  const DeformResult s = deform_mesh(sub, sub_target, sub_prescribed, whole);
+  DeformResult r = s;
+  r.mesh = m;
+  for (std::size_t k = 0; k < global.size(); ++k) r.mesh.x.col(global[k]) = s.mesh.x.col(Eigen::Index(k));
+  r.worst_ratio = mesh_validity(r.mesh).worst;
+  return r;
+}
+
+}  // namespace
+
 DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
                          const std::vector<bool>& prescribed, const DeformOptions& opt) {
   if (target.cols() != m.num_nodes() || prescribed.size() != static_cast<std::size_t>(m.num_nodes()))
     throw Error("deform_mesh: target and prescribed must have one entry per node");
   if (opt.increments < 1) throw Error("deform_mesh: increments must be >= 1");
+  if (opt.layers < 0) throw Error("deform_mesh: layers must be >= 0");
+  if (opt.layers > 0) return deform_region(m, target, prescribed, opt);
   const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
   const Eigen::Matrix2Xd start = m.x;
 

@@ -24,6 +24,11 @@ struct DeformOptions {
   LinearSolverOptions solver;
   int increments = 4;    ///< equal load increments from start to target
   int max_halvings = 6;  ///< halvings of a failing increment before giving up
+  /// 0: the elasticity is solved on the whole mesh. k > 0: only on the elements
+  /// within k element layers of the moving nodes (prescribed nodes whose target
+  /// differs from their position), the rest held still, as Gmsh's
+  /// Mesh.HighOrderNumLayers; cheaper on large meshes, the result differs.
+  int layers = 0;
 };
 
 struct DeformResult {
@@ -42,6 +47,11 @@ struct DeformResult {
 /// formulation) or a failed solve.
 DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
                          const std::vector<bool>& prescribed, const DeformOptions& opt = {});
+
+/// The triangles within `layers` >= 1 element layers of the nodes with
+/// moving[i]: layer 1 holds every triangle with a moving node, layer k + 1
+/// adds those sharing a node with layer k. Ascending triangle indices.
+std::vector<int> moving_region(const Mesh& m, const std::vector<bool>& moving, int layers);
 
 /// prescribed[i] = node i lies on a model point or curve (dim 0 or 1).
 std::vector<bool> boundary_nodes(const Mesh& m);

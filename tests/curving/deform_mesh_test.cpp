@@ -131,3 +131,42 @@ TEST_CASE("an impossible deformation stops at the last valid state", "[curving]"
   REQUIRE(mesh_validity(r.mesh).invalid == 0);
   REQUIRE_THROWS_AS(deform_mesh(m, target, boundary_nodes(m), DeformOptions{"nosuch"}), Error);
 }
+
+TEST_CASE("layers = k solves near the moving nodes only; enough layers give the full solve",
+          "[curving]") {
+  const Annulus a = straight_annulus(6, 3);
+  DeformOptions opt;
+  const DeformResult full = deform_mesh(a.m, a.target, a.prescribed, opt);
+  std::vector<bool> moving(a.m.num_nodes());
+  for (int i = 0; i < a.m.num_nodes(); ++i)
+    moving[i] = a.prescribed[i] && a.target.col(i) != a.m.x.col(i);
+  // Only the edge nodes of the 6 + 6 straight chords of the circles move (their
+  // ends are on the circles): layer 1 is the one triangle on each chord.
+  const std::vector<int> one = moving_region(a.m, moving, 1);
+  CHECK(one.size() == 2 * 6);
+  CHECK(moving_region(a.m, moving, 3).size() < std::size_t(a.m.num_triangles()));
+  CHECK(moving_region(a.m, moving, 6).size() == std::size_t(a.m.num_triangles()));
+
+  opt.layers = 1;
+  const DeformResult near = deform_mesh(a.m, a.target, a.prescribed, opt);
+  REQUIRE(near.complete);
+  REQUIRE(mesh_validity(near.mesh).invalid == 0);
+  CHECK(near.worst_ratio == Approx(mesh_validity(near.mesh).worst));
+  std::vector<bool> in_region(a.m.num_nodes(), false);
+  for (int e : one)
+    for (int i = 0; i < a.m.tri.rows(); ++i) in_region[a.m.tri(i, e)] = true;
+  double off_target = 0, moved_outside = 0;
+  for (int i = 0; i < a.m.num_nodes(); ++i) {
+    const double d = (near.mesh.x.col(i) - a.m.x.col(i)).norm();
+    if (a.prescribed[i]) off_target = std::max(off_target, (near.mesh.x.col(i) - a.target.col(i)).norm());
+    if (!in_region[i]) moved_outside = std::max(moved_outside, d);
+  }
+  CHECK(off_target < 1e-12);
+  CHECK(moved_outside == 0.0);
+  CHECK((near.mesh.x - full.mesh.x).cwiseAbs().maxCoeff() > 1e-6);
+
+  opt.layers = 6;
+  const DeformResult all = deform_mesh(a.m, a.target, a.prescribed, opt);
+  CHECK((all.mesh.x - full.mesh.x).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK(all.worst_ratio == Approx(full.worst_ratio).epsilon(1e-12));
+}
