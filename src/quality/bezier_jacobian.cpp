@@ -31,7 +31,7 @@ struct ProductTerm {
 struct JacobianTables {
   explicit JacobianTables(int p) {
     const int q = p - 1, m = bezier_size(q);
-    to_bezier_transposed = lagrange_to_bezier(p, reference_nodes(p)).transpose();
+    to_bezier = lagrange_to_bezier(p, reference_nodes(p));
     du_plus.resize(m);
     dv_plus.resize(m);
     d_minus.resize(m);
@@ -58,7 +58,7 @@ struct JacobianTables {
     }
   }
 
-  Eigen::MatrixXd to_bezier_transposed;  // control points = X * this
+  Eigen::MatrixXd to_bezier;  // control points = X * transpose(this)
   // Control point e of the derivatives: d/du = b[du_plus[e]] - b[d_minus[e]],
   // d/dv = b[dv_plus[e]] - b[d_minus[e]] (times p, folded into `product`).
   std::vector<int> du_plus, dv_plus, d_minus;
@@ -72,29 +72,67 @@ const JacobianTables& jacobian_tables(int p) {
   return *tables[p];
 }
 
-}  // namespace
-
-Eigen::VectorXd jacobian_determinant_bezier(const Eigen::Matrix2Xd& X, int p) {
+void check_order(const char* who, int p) {
   if (p < 1 || p > kMaxBezierJacobianOrder) {
-    throw Error("jacobian_determinant_bezier: order " + std::to_string(p) + " not in [1, " +
+    throw Error(std::string(who) + ": order " + std::to_string(p) + " not in [1, " +
                 std::to_string(kMaxBezierJacobianOrder) + "]");
   }
-  if (X.cols() != bezier_size(p)) {
-    throw Error("jacobian_determinant_bezier: an order " + std::to_string(p) + " triangle has " +
-                std::to_string(bezier_size(p)) + " nodes, got " + std::to_string(X.cols()));
+}
+
+}  // namespace
+
+void jacobian_control_points(const Eigen::Matrix2Xd& X, int p, Eigen::Ref<Eigen::Matrix2Xd> U,
+                             Eigen::Ref<Eigen::Matrix2Xd> V) {
+  check_order("jacobian_control_points", p);
+  const int n = bezier_size(p), m = bezier_size(p - 1);
+  if (X.cols() != n) {
+    throw Error("jacobian_control_points: an order " + std::to_string(p) + " triangle has " +
+                std::to_string(n) + " nodes, got " + std::to_string(X.cols()));
+  }
+  if (U.cols() != m || V.cols() != m) {
+    throw Error("jacobian_control_points: order " + std::to_string(p) + " needs " +
+                std::to_string(m) + " control points per derivative");
   }
   const JacobianTables& t = jacobian_tables(p);
-  const Eigen::Matrix2Xd b = X.lazyProduct(t.to_bezier_transposed);
-  const int m = bezier_size(p - 1);
-  Eigen::Matrix2Xd du(2, m), dv(2, m);
+  // b = X * transpose(to_bezier), one node (column of to_bezier) at a time.
+  double bx[kMaxBezierJacobianNodes] = {}, by[kMaxBezierJacobianNodes] = {};
+  for (int i = 0; i < n; ++i) {
+    const double* col = t.to_bezier.col(i).data();
+    const double xi = X(0, i), yi = X(1, i);
+    for (int k = 0; k < n; ++k) {
+      bx[k] += xi * col[k];
+      by[k] += yi * col[k];
+    }
+  }
   for (int e = 0; e < m; ++e) {
-    du.col(e) = b.col(t.du_plus[e]) - b.col(t.d_minus[e]);
-    dv.col(e) = b.col(t.dv_plus[e]) - b.col(t.d_minus[e]);
+    U(0, e) = bx[t.du_plus[e]] - bx[t.d_minus[e]];
+    U(1, e) = by[t.du_plus[e]] - by[t.d_minus[e]];
+    V(0, e) = bx[t.dv_plus[e]] - bx[t.d_minus[e]];
+    V(1, e) = by[t.dv_plus[e]] - by[t.d_minus[e]];
   }
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(bezier_size(2 * (p - 1)));
+}
+
+void jacobian_determinant_bezier(const Eigen::Ref<const Eigen::Matrix2Xd>& U,
+                                 const Eigen::Ref<const Eigen::Matrix2Xd>& V, int p,
+                                 Eigen::Ref<Eigen::VectorXd> c) {
+  check_order("jacobian_determinant_bezier", p);
+  if (U.cols() != bezier_size(p - 1) || V.cols() != U.cols() ||
+      c.size() != bezier_size(2 * (p - 1))) {
+    throw Error("jacobian_determinant_bezier: sizes do not match order " + std::to_string(p));
+  }
+  const JacobianTables& t = jacobian_tables(p);
+  c.setZero();
   for (const ProductTerm& term : t.product) {
-    c(term.g) += term.w * (du(0, term.a) * dv(1, term.b) - dv(0, term.a) * du(1, term.b));
+    c(term.g) += term.w * (U(0, term.a) * V(1, term.b) - V(0, term.a) * U(1, term.b));
   }
+}
+
+Eigen::VectorXd jacobian_determinant_bezier(const Eigen::Matrix2Xd& X, int p) {
+  check_order("jacobian_determinant_bezier", p);
+  JacobianControlPoints U(2, bezier_size(p - 1)), V(2, bezier_size(p - 1));
+  jacobian_control_points(X, p, U, V);
+  Eigen::VectorXd c(bezier_size(2 * (p - 1)));
+  jacobian_determinant_bezier(U, V, p, c);
   return c;
 }
 

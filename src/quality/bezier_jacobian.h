@@ -26,13 +26,35 @@
 
 namespace homesh {
 
-/// Highest element order accepted by jacobian_determinant_bezier.
+/// Highest element order accepted by the functions below.
 constexpr int kMaxBezierJacobianOrder = 20;
+/// Nodes of a triangle of that order, (p+1)(p+2)/2.
+constexpr int kMaxBezierJacobianNodes =
+    (kMaxBezierJacobianOrder + 1) * (kMaxBezierJacobianOrder + 2) / 2;
+
+/// Control points of one derivative: 2 by bezier_size(p-1), stored in place
+/// (no heap allocation) for every order accepted.
+using JacobianControlPoints =
+    Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxBezierJacobianNodes>;
 
 /// bezier_size(2(p-1)) Bernstein coefficients (storage of bezier_triangle.h)
 /// of det J(u, v) for the order-p triangle with nodes X (2 by (p+1)(p+2)/2,
 /// Gmsh order). Throws homesh::Error unless 1 <= p <= kMaxBezierJacobianOrder
 /// and X has (p+1)(p+2)/2 columns.
 Eigen::VectorXd jacobian_determinant_bezier(const Eigen::Matrix2Xd& X, int p);
+
+/// The Bezier control points of the columns of J, degree p-1, without the
+/// factor p: x_u = p sum_e U.col(e) B^{p-1}_e(u, v) and likewise x_v with V;
+/// U, V are 2 by bezier_size(p-1). Everything else that needs J of the element
+/// (det J's coefficients, J at sample points) can start from them. No heap
+/// allocation. Throws as above, and if U or V has the wrong size.
+void jacobian_control_points(const Eigen::Matrix2Xd& X, int p, Eigen::Ref<Eigen::Matrix2Xd> U,
+                             Eigen::Ref<Eigen::Matrix2Xd> V);
+
+/// det J's coefficients (as above) from the control points U, V of the order-p
+/// element, written to c (bezier_size(2(p-1))). No heap allocation.
+void jacobian_determinant_bezier(const Eigen::Ref<const Eigen::Matrix2Xd>& U,
+                                 const Eigen::Ref<const Eigen::Matrix2Xd>& V, int p,
+                                 Eigen::Ref<Eigen::VectorXd> c);
 
 }  // namespace homesh

@@ -21,45 +21,54 @@ struct Domain {
 
 class Refinement {
  public:
-  Refinement(int d, const Eigen::VectorXd& c, const BoundsOptions& opt)
-      : d_(d), n_(bezier_size(d)), opt_(opt) {
-    coeffs_.reserve(static_cast<std::size_t>(n_) * 64);
-    live_.reserve(64);
-    coeffs_.assign(c.data(), c.data() + n_);
-    min_l_ = max_l_ = c(0);
-    add(0);
+  // `c` (bezier_size(d) coefficients) must outlive the object; it is copied
+  // only if the whole triangle needs splitting.
+  Refinement(int d, const double* c, const BoundsOptions& opt)
+      : d_(d), n_(bezier_size(d)), opt_(opt), root_(c) {
+    min_l_ = max_l_ = c[0];
+    root_domain_ = bounds_of(c, 0);
   }
 
   JacobianBounds run() {
+    const auto ok = [this](const Domain& D) { return min_ok(D) && max_ok(D); };
+    // Most elements of a good mesh are decided by their own coefficients:
+    // then no domain storage is made at all.
+    if (ok(root_domain_)) return result(root_domain_, root_domain_);
+    coeffs_.reserve(static_cast<std::size_t>(n_) * 64);
+    live_.reserve(64);
+    coeffs_.assign(root_, root_ + n_);
+    live_.push_back(root_domain_);
     // Split the domain of lowest bound, then that of highest bound, until it
     // meets both criteria (as Gmsh does). Meanwhile the tolerance can only
     // grow and the bounds only tighten, so the minimum stays refined.
     const auto by_min = [](const Domain& a, const Domain& b) { return a.min_b > b.min_b; };
     const auto by_max = [](const Domain& a, const Domain& b) { return a.max_b < b.max_b; };
-    const auto ok = [this](const Domain& D) { return min_ok(D) && max_ok(D); };
     refine(by_min, ok);
     refine(by_max, ok);
-
-    JacobianBounds r;
     const auto lowest = std::min_element(live_.begin(), live_.end(), [](auto& a, auto& b) {
       return a.min_b < b.min_b;
     });
     const auto highest = std::max_element(live_.begin(), live_.end(), [](auto& a, auto& b) {
       return a.max_b < b.max_b;
     });
-    r.min_lower = lowest->min_b;
+    return result(*lowest, *highest);
+  }
+
+ private:
+  JacobianBounds result(const Domain& lowest, const Domain& highest) const {
+    JacobianBounds r;
+    r.min_lower = lowest.min_b;
     r.min_upper = min_l_;
     r.max_lower = max_l_;
-    r.max_upper = highest->max_b;
+    r.max_upper = highest.max_b;
     r.tolerance = tolerance();
-    r.converged = min_ok(*lowest) && max_ok(*highest);
+    r.converged = min_ok(lowest) && max_ok(highest);
     r.valid_certified = r.min_lower > 0;
     r.invalid_certified = r.min_upper <= 0;
     r.subdivisions = subdivisions_;
     return r;
   }
 
- private:
   double tolerance() const {
     return opt_.relative_tolerance * std::max(std::abs(min_l_), std::abs(max_l_));
   }
@@ -70,19 +79,19 @@ class Refinement {
     return (max_l_ >= 0 || D.max_b < 0) && D.max_b - max_l_ <= tolerance();
   }
 
-  // Registers the domain stored at `offset`: its bounds and exact corner values.
-  void add(int offset) {
-    const double* c = coeffs_.data() + offset;
+  // The bounds of the domain with coefficients c stored at `offset`; the
+  // exact corner values update the extreme values found.
+  Domain bounds_of(const double* c, int offset) {
     double lo = c[0], hi = c[0];
     for (int i = 1; i < n_; ++i) {
       lo = std::min(lo, c[i]);
       hi = std::max(hi, c[i]);
     }
-    live_.push_back({offset, lo, hi});
     for (const int corner : {0, d_, n_ - 1}) {
       min_l_ = std::min(min_l_, c[corner]);
       max_l_ = std::max(max_l_, c[corner]);
     }
+    return {offset, lo, hi};
   }
 
   // Splits the heap top (the worst domain for `cmp`) until it satisfies `ok`.
@@ -98,7 +107,8 @@ class Refinement {
       bezier_subdivide(d_, Eigen::Map<const Eigen::VectorXd>(coeffs_.data() + parent, n_),
                        Eigen::Map<Eigen::MatrixXd>(coeffs_.data() + first, n_, 4));
       for (int s = 0; s < 4; ++s) {
-        add(first + s * n_);
+        const int offset = first + s * n_;
+        live_.push_back(bounds_of(coeffs_.data() + offset, offset));
         std::push_heap(live_.begin(), live_.end(), cmp);
       }
       ++subdivisions_;
@@ -107,6 +117,8 @@ class Refinement {
 
   int d_, n_;
   BoundsOptions opt_;
+  const double* root_;          // the coefficients of the whole triangle
+  Domain root_domain_;
   std::vector<double> coeffs_;  // the coefficients of every domain made
   std::vector<Domain> live_;    // the current partition of the triangle
   double min_l_, max_l_;        // exact extreme values found so far
@@ -115,7 +127,8 @@ class Refinement {
 
 }  // namespace
 
-JacobianBounds bezier_bounds(int d, const Eigen::VectorXd& c, const BoundsOptions& opt) {
+JacobianBounds bezier_bounds(int d, const Eigen::Ref<const Eigen::VectorXd>& c,
+                             const BoundsOptions& opt) {
   if (d < 0 || c.size() != bezier_size(d)) {
     throw Error("bezier_bounds: degree " + std::to_string(d) + " needs " +
                 std::to_string(bezier_size(d)) + " coefficients, got " + std::to_string(c.size()));
@@ -124,11 +137,24 @@ JacobianBounds bezier_bounds(int d, const Eigen::VectorXd& c, const BoundsOption
   if (!(opt.relative_tolerance >= 0) || opt.max_subdivisions < 0) {
     throw Error("bezier_bounds: relative_tolerance and max_subdivisions must be >= 0");
   }
-  return Refinement(d, c, opt).run();
+  return Refinement(d, c.data(), opt).run();
 }
 
 JacobianBounds jacobian_bounds(const Eigen::Matrix2Xd& X, int p, const BoundsOptions& opt) {
-  return bezier_bounds(2 * (p - 1), jacobian_determinant_bezier(X, p), opt);
+  const int q = std::clamp(p, 1, kMaxBezierJacobianOrder) - 1;
+  JacobianControlPoints U(2, bezier_size(q)), V(2, bezier_size(q));
+  jacobian_control_points(X, p, U, V);
+  return jacobian_bounds(U, V, p, opt);
+}
+
+JacobianBounds jacobian_bounds(const JacobianControlPoints& U, const JacobianControlPoints& V,
+                               int p, const BoundsOptions& opt) {
+  // bezier_size(2 (kMaxBezierJacobianOrder - 1)) coefficients at most.
+  double c[(2 * kMaxBezierJacobianOrder - 1) * kMaxBezierJacobianOrder];
+  const int d = 2 * (std::clamp(p, 1, kMaxBezierJacobianOrder) - 1);
+  Eigen::Map<Eigen::VectorXd> coefficients(c, bezier_size(d));
+  jacobian_determinant_bezier(U, V, p, coefficients);
+  return bezier_bounds(d, coefficients, opt);
 }
 
 double scaled_jacobian_ratio(const JacobianBounds& b) {

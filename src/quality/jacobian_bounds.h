@@ -20,6 +20,8 @@
 // bounds too.
 #include <Eigen/Core>
 
+#include "quality/bezier_jacobian.h"
+
 namespace homesh {
 
 /// Stopping criteria of the subdivision.
@@ -51,11 +53,19 @@ struct JacobianBounds {
 
 /// Bounds of the degree-d polynomial with Bernstein coefficients c
 /// (bezier_size(d), storage of bezier_triangle.h) over the reference triangle.
-JacobianBounds bezier_bounds(int d, const Eigen::VectorXd& c, const BoundsOptions& opt = {});
+JacobianBounds bezier_bounds(int d, const Eigen::Ref<const Eigen::VectorXd>& c,
+                             const BoundsOptions& opt = {});
 
 /// Bounds of det J (= 2 * area for a straight-sided triangle) of the order-p
 /// triangle with nodes X (2 by (p+1)(p+2)/2, Gmsh order).
 JacobianBounds jacobian_bounds(const Eigen::Matrix2Xd& X, int p, const BoundsOptions& opt = {});
+
+/// The same from the element's derivative control points U, V
+/// (jacobian_control_points in bezier_jacobian.h), for callers that use them
+/// for more than the bounds. No heap allocation unless the triangle needs
+/// subdividing.
+JacobianBounds jacobian_bounds(const JacobianControlPoints& U, const JacobianControlPoints& V,
+                               int p, const BoundsOptions& opt = {});
 
 /// Gmsh's "minJ/maxJ" (AnalyseMeshQuality plugin) from the bounds
 /// minJ = min_lower and maxJ = max_upper: minJ / maxJ if maxJ > 0, maxJ / minJ

@@ -2,81 +2,174 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <optional>
 
-#include "element/lagrange_basis.h"
 #include "element/reference_nodes.h"
+#include "quality/bezier_triangle.h"
 #include "quality/ideal_jacobian.h"
 
 namespace homesh {
+namespace {
 
-std::vector<MeshMeasure> mesh_measures(const Mesh& m, const std::vector<const Measure*>& qs,
-                                       int lattice, Reference ref) {
-  const int p = m.order, nodes = triangle_node_count(p), n = m.num_triangles();
-  // Sample points: the lattice, plus the element nodes unless the lattice
-  // already holds them (lattice a multiple of p); node_point[i] is node i's.
-  Eigen::Matrix2Xd uv = reference_nodes(lattice);
-  std::vector<int> node_point(static_cast<std::size_t>(nodes));
-  if (lattice % p == 0) {
-    const Eigen::Matrix2Xi on_lattice = reference_node_indices(lattice);
-    const Eigen::Matrix2Xi node_index = reference_node_indices(p) * (lattice / p);
-    for (int i = 0; i < nodes; ++i)
-      for (int k = 0; k < on_lattice.cols(); ++k)
-        if (on_lattice.col(k) == node_index.col(i)) node_point[i] = k;
-  } else {
-    const Eigen::Index l = uv.cols();
-    uv.conservativeResize(2, l + nodes);
-    uv.rightCols(nodes) = reference_nodes(p);
-    for (int i = 0; i < nodes; ++i) node_point[i] = static_cast<int>(l) + i;
+// The sample points of an order-p element: the order-`lattice` reference
+// lattice, plus the element nodes unless the lattice already holds them
+// (lattice a multiple of p); node_point[i] is node i's point.
+class LatticeSampling {
+ public:
+  LatticeSampling(int p, int lattice) : sampling_(p, points(p, lattice, node_point_)) {
+    const Eigen::Matrix2Xd& uv = sampling_.points();
+    bernstein_.resize(bezier_size(p - 1), uv.cols());
+    for (Eigen::Index k = 0; k < uv.cols(); ++k)
+      bernstein_.col(k) = p * bernstein_basis(p - 1, uv.col(k));
   }
-  const ElementSampling sampling(p, uv);
-  const int points = sampling.size();
-  // The same gradients as `sampling`, as matrices: J at every point of an
-  // element is then two small matrix products.
-  Eigen::MatrixXd dNdu, dNdv;
-  LagrangeBasis(p).tabulate_gradients(uv, dNdu, dNdv);
-  const Eigen::Matrix2d to_ideal = reference_to_ideal_jacobian().inverse();
 
-  std::vector<MeshMeasure> out(qs.size());
-  for (auto& r : out) {
-    r.element_min.resize(n);
-    r.node_values.resize(nodes, n);
+  int size() const { return sampling_.size(); }
+
+  // Per-thread storage for one element's samples.
+  struct Work {
+    explicit Work(int points) : W(points), det(points), value(points) {}
+    std::vector<Eigen::Matrix2d> W;
+    std::vector<double> det, value;
+  };
+
+  // Measures qs of element e (nodes X, derivative control points U, V) into
+  // column e of each result.
+  void measure(const std::vector<const Measure*>& qs, Reference ref, const Eigen::Matrix2Xd& X,
+               const JacobianControlPoints& U, const JacobianControlPoints& V, int e, Work& w,
+               std::vector<MeshMeasure>& out) const {
+    const Eigen::Matrix2d to_ideal = reference_to_ideal_jacobian().inverse();
+    const int points = size(), q = static_cast<int>(U.cols());
+    for (int k = 0; k < points; ++k) {
+      // J = p sum_c B^{p-1}_c [U.col(c) V.col(c)] (p folded into bernstein_).
+      const double* b = bernstein_.col(k).data();
+      Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+      for (int c = 0; c < q; ++c) {
+        J.col(0) += b[c] * U.col(c);
+        J.col(1) += b[c] * V.col(c);
+      }
+      w.W[k].noalias() = J * to_ideal;  // W = J inv(J_ri), as ideal_jacobian
+      w.det[k] = w.W[k].determinant();
+    }
+    std::vector<double>& value = w.value;
+    for (std::size_t j = 0; j < qs.size(); ++j) {
+      const Measure& m = *qs[j];
+      if (!m.pointwise()) {
+        std::fill(value.begin(), value.end(), m.element(sampling_, X));
+      } else if (ref == Reference::element_max && m.thesis_max_normalised) {
+        // point_quality's raw / max raw (element_quality.h), each raw value
+        // computed once.
+        double max_raw = 0.0;
+        for (int k = 0; k < points; ++k) {
+          value[k] = m.raw(w.W[k]);
+          if (w.det[k] > 0.0) max_raw = std::max(max_raw, value[k]);
+        }
+        for (int k = 0; k < points; ++k)
+          value[k] = w.det[k] <= 0.0 || !(max_raw > 0.0) ? 0.0 : value[k] / max_raw;
+      } else {
+        for (int k = 0; k < points; ++k) value[k] = m.quality(w.W[k]);
+      }
+      double lowest = 1.0;
+      for (const double v : value) lowest = std::min(lowest, v);
+      for (std::size_t i = 0; i < node_point_.size(); ++i)
+        out[j].node_values(static_cast<Eigen::Index>(i), e) = value[node_point_[i]];
+      out[j].element_min(e) = lowest;
+    }
+  }
+
+ private:
+  static Eigen::Matrix2Xd points(int p, int lattice, std::vector<int>& node_point) {
+    const int nodes = triangle_node_count(p);
+    Eigen::Matrix2Xd uv = reference_nodes(lattice);
+    node_point.resize(static_cast<std::size_t>(nodes));
+    if (lattice % p == 0) {
+      const Eigen::Matrix2Xi on_lattice = reference_node_indices(lattice);
+      const Eigen::Matrix2Xi node_index = reference_node_indices(p) * (lattice / p);
+      for (int i = 0; i < nodes; ++i)
+        for (int k = 0; k < on_lattice.cols(); ++k)
+          if (on_lattice.col(k) == node_index.col(i)) node_point[i] = k;
+    } else {
+      const Eigen::Index l = uv.cols();
+      uv.conservativeResize(2, l + nodes);
+      uv.rightCols(nodes) = reference_nodes(p);
+      for (int i = 0; i < nodes; ++i) node_point[i] = static_cast<int>(l) + i;
+    }
+    return uv;
+  }
+
+  std::vector<int> node_point_;  // filled by points(), before sampling_
+  ElementSampling sampling_;     // the points, for measures of the whole element
+  Eigen::MatrixXd bernstein_;    // bezier_size(p-1) by points: p B^{p-1}_c(point)
+};
+
+// How many triangles ahead the loop requests nodes from memory.
+constexpr int kPrefetchAhead = 4;
+
+// The one loop over the triangles: bounds if `bounds`, measures if qs is not empty.
+MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
+                  Reference ref, const BoundsOptions* bounds) {
+  const int p = m.order, n = m.num_triangles(), q = bezier_size(p - 1);
+  std::optional<LatticeSampling> sampling;
+  if (!qs.empty()) sampling.emplace(p, lattice);
+  MeshQuality r;
+  MeshValidity& v = r.validity;
+  std::vector<char> valid, converged;
+  if (bounds) {
+    v.ratio.resize(n);
+    v.min_det.resize(n);
+    v.relative_tolerance = bounds->relative_tolerance;
+    valid.resize(static_cast<std::size_t>(n));
+    converged.resize(valid.size());
+  }
+  r.measures.resize(qs.size());
+  for (auto& out : r.measures) {
+    out.element_min.resize(n);
+    out.node_values.resize(triangle_node_count(p), n);
   }
 #pragma omp parallel
   {
-    Eigen::Matrix2Xd X(2, nodes), Ju(2, points), Jv(2, points);
-    std::vector<Eigen::Matrix2d> W(static_cast<std::size_t>(points));
-    std::vector<double> det(static_cast<std::size_t>(points)), value(det.size());
-#pragma omp for schedule(static)
+    Eigen::Matrix2Xd X(2, triangle_node_count(p));
+    JacobianControlPoints U(2, q), V(2, q);
+    LatticeSampling::Work work(sampling ? sampling->size() : 0);
+#pragma omp for schedule(dynamic, 256)
     for (int e = 0; e < n; ++e) {
-      for (int i = 0; i < nodes; ++i) X.col(i) = m.x.col(m.tri(i, e));
-      Ju.noalias() = X * dNdu;
-      Jv.noalias() = X * dNdv;
-      for (int k = 0; k < points; ++k) {
-        Eigen::Matrix2d J;
-        J << Ju(0, k), Jv(0, k), Ju(1, k), Jv(1, k);
-        W[k].noalias() = J * to_ideal;  // W = J inv(J_ri), as ideal_jacobian
-        det[k] = W[k].determinant();
+      // The nodes of a triangle a few ahead are requested now: on large
+      // meshes waiting for them would otherwise take much of the time.
+      if (e + kPrefetchAhead < n)
+        for (int i = 0; i < X.cols(); ++i)
+          __builtin_prefetch(m.x.col(m.tri(i, e + kPrefetchAhead)).data());
+      for (int i = 0; i < X.cols(); ++i) X.col(i) = m.x.col(m.tri(i, e));
+      jacobian_control_points(X, p, U, V);
+      if (bounds) {
+        const JacobianBounds b = jacobian_bounds(U, V, p, *bounds);
+        v.ratio(e) = scaled_jacobian_ratio(b);
+        v.min_det(e) = b.min_lower;
+        valid[e] = b.valid_certified;
+        converged[e] = b.converged;
       }
-      for (std::size_t j = 0; j < qs.size(); ++j) {
-        const Measure& q = *qs[j];
-        ElementScale scale;
-        if (!q.pointwise()) {
-          scale.element_value = q.element(sampling, X);
-        } else if (ref == Reference::element_max && q.thesis_max_normalised) {
-          for (int k = 0; k < points; ++k)
-            if (det[k] > 0.0) scale.max_raw = std::max(scale.max_raw, q.raw(W[k]));
-        }
-        double lowest = 1.0;
-        for (int k = 0; k < points; ++k) {
-          value[k] = point_quality(q, W[k], scale, ref);
-          lowest = std::min(lowest, value[k]);
-        }
-        for (int i = 0; i < nodes; ++i) out[j].node_values(i, e) = value[node_point[i]];
-        out[j].element_min(e) = lowest;
-      }
+      if (sampling) sampling->measure(qs, ref, X, U, V, e, work, r.measures);
     }
   }
-  return out;
+  for (int e = 0; bounds && e < n; ++e) {
+    v.invalid += valid[e] ? 0 : 1;
+    v.unconverged += converged[e] ? 0 : 1;
+    if (v.worst_element < 0 || v.ratio(e) < v.worst) {
+      v.worst = v.ratio(e);
+      v.worst_element = e;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+std::vector<MeshMeasure> mesh_measures(const Mesh& m, const std::vector<const Measure*>& qs,
+                                       int lattice, Reference ref) {
+  return sweep(m, qs, lattice, ref, nullptr).measures;
+}
+
+MeshQuality mesh_quality(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
+                         Reference ref, const BoundsOptions& opt) {
+  return sweep(m, qs, lattice, ref, &opt);
 }
 
 }  // namespace homesh

@@ -2,16 +2,23 @@
 // Quality measures (quality/measure_registry.h) over every triangle of a mesh:
 // values at each element's own nodes (for ElementNodeData views, drawn curved)
 // and the minimum over the nodes and a reference lattice (thesis Section 3.6
-// shows measures at ~200 points per element; the lattice order is a choice).
-// W is computed once per sample point and shared by all measures; elements are
-// processed in parallel (OpenMP), each independently, so results do not depend
-// on the thread count.
+// shows measures at ~200 points per element; the lattice order is a choice);
+// with the certified bounds of det J (quality/mesh_validity.h) in the same pass.
+//
+// One pass per element: its nodes are gathered once and turned into the Bezier
+// control points of J (quality/bezier_jacobian.h); det J's Bernstein
+// coefficients (the bounds) and J at every sample point (the measures, through
+// W = J inv(J_ri)) both come from those, and W is shared by all measures.
+// Elements are processed in parallel (OpenMP), each independently, so results
+// do not depend on the thread count.
 #include <Eigen/Core>
 #include <vector>
 
 #include "core/mesh.h"
 #include "quality/element_quality.h"
+#include "quality/jacobian_bounds.h"
 #include "quality/measure_registry.h"
+#include "quality/mesh_validity.h"
 
 namespace homesh {
 
@@ -31,5 +38,16 @@ inline int default_lattice_order(int p) { return 2 * p; }
 /// normalisation `ref`. One result per measure, in the order of `qs`.
 std::vector<MeshMeasure> mesh_measures(const Mesh& m, const std::vector<const Measure*>& qs,
                                        int lattice, Reference ref);
+
+/// Certified validity and measures of one mesh.
+struct MeshQuality {
+  MeshValidity validity;              ///< as mesh_validity(m, opt)
+  std::vector<MeshMeasure> measures;  ///< as mesh_measures(m, qs, lattice, ref)
+};
+
+/// mesh_validity and mesh_measures in one pass over the triangles. With `qs`
+/// empty only the bounds are computed (lattice and ref are then unused).
+MeshQuality mesh_quality(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
+                         Reference ref, const BoundsOptions& opt = {});
 
 }  // namespace homesh

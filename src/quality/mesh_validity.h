@@ -2,7 +2,8 @@
 // Certified validity of every triangle of a mesh (quality/jacobian_bounds.h):
 // an element counts as valid only if its Bezier bounds prove det J > 0 on the
 // whole element; elements whose sign the subdivision could not decide count as
-// invalid (never the reverse).
+// invalid (never the reverse). It is mesh_quality (quality/mesh_quality.h) with
+// no measures; call that to get measures in the same pass.
 #include <Eigen/Core>
 
 #include "core/mesh.h"

@@ -56,7 +56,9 @@ double inverse_mean_ratio_quality(const Eigen::Matrix2d& W) {
 }
 
 double condition_number_raw(const Eigen::Matrix2d& W) {
-  return 1.0 / (W.norm() * W.inverse().norm());
+  // In 2D inv(W) = adj(W) / omega and |adj W|_F = |W|_F, so
+  // 1 / (|W|_F |W^-1|_F) = |omega| / |W|_F^2: no inverse, no square root.
+  return std::abs(W.determinant()) / W.squaredNorm();
 }
 
 double condition_number_quality(const Eigen::Matrix2d& W) {

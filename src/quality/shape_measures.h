@@ -56,7 +56,8 @@ double inverse_mean_ratio_raw(const Eigen::Matrix2d& W);
 /// Q10: min(x, 1/x), x = 2 raw.
 double inverse_mean_ratio_quality(const Eigen::Matrix2d& W);
 
-/// Q11 raw, condition number of W (Freitag & Knupp; Eq 3.44): (|W|_F |W^-1|_F)^-1, at most 1/2.
+/// Q11 raw, condition number of W (Freitag & Knupp; Eq 3.44): (|W|_F |W^-1|_F)^-1
+/// = |omega| / |W|_F^2 in 2D, at most 1/2.
 double condition_number_raw(const Eigen::Matrix2d& W);
 /// Q11: 2 raw.
 double condition_number_quality(const Eigen::Matrix2d& W);

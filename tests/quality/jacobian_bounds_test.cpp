@@ -102,6 +102,31 @@ TEST_CASE("Bezier coefficients of det J reproduce det J", "[bounds]") {
   CHECK_THROWS_AS(jacobian_determinant_bezier(Eigen::Matrix2Xd::Zero(2, 6), 0), Error);
 }
 
+TEST_CASE("derivative control points reproduce J, every order to 10", "[bounds]") {
+  std::mt19937 rng(17);
+  for (int p = 1; p <= 10; ++p) {
+    INFO("p = " << p);
+    const LagrangeBasis basis(p);
+    const Eigen::Matrix2Xd X = curved_triangle(p, 0.5, rng);
+    JacobianControlPoints U(2, bezier_size(p - 1)), V(2, bezier_size(p - 1));
+    jacobian_control_points(X, p, U, V);
+    // The coefficients of det J from them are those from the nodes.
+    Eigen::VectorXd c(bezier_size(2 * (p - 1)));
+    jacobian_determinant_bezier(U, V, p, c);
+    CHECK((c - jacobian_determinant_bezier(X, p)).cwiseAbs().maxCoeff() == 0.0);
+    for (int q = 0; q < 50; ++q) {
+      const Eigen::Vector2d uv = random_point(rng);
+      const Eigen::VectorXd B = bernstein_basis(p - 1, uv);
+      Eigen::Matrix2d J;
+      J << p * U * B, p * V * B;
+      const Eigen::Matrix2d direct = jacobian(X, basis.gradients(uv));
+      CHECK((J - direct).cwiseAbs().maxCoeff() < 1e-12 * direct.cwiseAbs().maxCoeff());
+    }
+  }
+  JacobianControlPoints U(2, 3), V(2, 3);
+  CHECK_THROWS_AS(jacobian_control_points(Eigen::Matrix2Xd::Zero(2, 6), 3, U, V), Error);
+}
+
 TEST_CASE("bounds contain det J at 10^4 random points, valid and invalid elements",
           "[bounds]") {
   std::mt19937 rng(13);

@@ -48,3 +48,31 @@ TEST_CASE("mesh_validity counts the invalid triangles and finds the worst", "[qu
   REQUIRE(v.ratio(v.worst_element) == v.worst);
   REQUIRE(v.ratio.minCoeff() == v.worst);
 }
+
+TEST_CASE("mesh_quality is mesh_validity and mesh_measures in one pass", "[quality]") {
+  Mesh m = fem_test::unit_square(3, 4);
+  fem_test::warp(m, 0.08);
+  // One triangle made invalid: an interior node of the first pushed outside it.
+  m.x.col(m.tri(12, 0)) += Eigen::Vector2d(0.4, -0.3);
+  std::vector<const Measure*> qs;
+  for (const char* name : {"Q1", "Q4", "Q11", "Q17"}) qs.push_back(&measure(name));
+  BoundsOptions opt;
+  opt.relative_tolerance = 1e-4;
+  const MeshQuality both = mesh_quality(m, qs, 8, Reference::element_max, opt);
+  const MeshValidity alone = mesh_validity(m, opt);
+  REQUIRE(alone.invalid >= 1);
+  CHECK(both.validity.invalid == alone.invalid);
+  CHECK(both.validity.worst_element == alone.worst_element);
+  CHECK(both.validity.relative_tolerance == 1e-4);
+  CHECK((both.validity.ratio - alone.ratio).cwiseAbs().maxCoeff() == 0.0);
+  CHECK((both.validity.min_det - alone.min_det).cwiseAbs().maxCoeff() == 0.0);
+  const auto measures = mesh_measures(m, qs, 8, Reference::element_max);
+  REQUIRE(both.measures.size() == qs.size());
+  for (std::size_t j = 0; j < qs.size(); ++j) {
+    CHECK((both.measures[j].element_min - measures[j].element_min).cwiseAbs().maxCoeff() == 0.0);
+    CHECK((both.measures[j].node_values - measures[j].node_values).cwiseAbs().maxCoeff() == 0.0);
+  }
+  // The invalid triangle scores 0 in every measure that needs omega > 0.
+  const int bad = alone.worst_element;
+  for (std::size_t j = 1; j < qs.size(); ++j) CHECK(both.measures[j].element_min(bad) == 0.0);
+}
