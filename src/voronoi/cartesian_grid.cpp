@@ -26,4 +26,15 @@ Eigen::Vector2i CartesianGrid::nearest_node(const Eigen::Vector2d& p) const {
   return {std::clamp(i, 0, nx - 1), std::clamp(j, 0, ny - 1)};
 }
 
+double bilinear_at(const CartesianGrid& g, const Eigen::VectorXd& values,
+                   const Eigen::Vector2d& p) {
+  const double u = std::clamp((p.x() - g.origin.x()) / g.dx, 0.0, g.nx - 1.0);
+  const double v = std::clamp((p.y() - g.origin.y()) / g.dy, 0.0, g.ny - 1.0);
+  const int i = std::min(static_cast<int>(u), g.nx - 2);
+  const int j = std::min(static_cast<int>(v), g.ny - 2);
+  const double a = u - i, b = v - j;
+  return (1 - a) * (1 - b) * values(g.index(i, j)) + a * (1 - b) * values(g.index(i + 1, j)) +
+         a * b * values(g.index(i + 1, j + 1)) + (1 - a) * b * values(g.index(i, j + 1));
+}
+
 }  // namespace homesh

@@ -37,4 +37,9 @@ Eigen::VectorXd sample_on_grid(const CartesianGrid& grid, F&& f) {
   return values;
 }
 
+/// The bilinear interpolant of `values` (grid.node_count(), one per node) at
+/// p, clamped to the grid's box.
+double bilinear_at(const CartesianGrid& grid, const Eigen::VectorXd& values,
+                   const Eigen::Vector2d& p);
+
 }  // namespace homesh

@@ -1,9 +1,5 @@
 #include "voronoi/growth_field.h"
 
-#include <string>
-
-#include "core/error.h"
-
 namespace homesh {
 
 GrowthField::GrowthField(const VoronoiProblem& problem)
@@ -11,21 +7,16 @@ GrowthField::GrowthField(const VoronoiProblem& problem)
       metric_(problem.metric),
       contact_(problem.contact),
       domain_(problem.domain) {
+  check_domain_size(problem);
   const CartesianGrid& g = grid_;
   const int n = g.node_count();
-  uniform_ = true;
-  for (int k = 1; k < metric_.coarse().node_count(); ++k)
-    uniform_ = uniform_ && metric_.metric(k) == metric_.metric(0);
-  if (!uniform_) {
+  if (!metric_.uniform()) {
     stencil_.resize(n);
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) stencil_[g.index(i, j)] = metric_.stencil(g.point(i, j));
   }
   inside_count_ = n;
   if (!has_domain()) return;
-  if (domain_.size() != n)
-    throw Error("voronoi: domain has " + std::to_string(domain_.size()) + " values for " +
-                std::to_string(n) + " grid nodes");
   // The contact band: one cell into the boundary crystal, so that a wall of
   // three cells or more has a core no crystal enters.
   const double width = g.ds();
@@ -52,7 +43,8 @@ GrowthField::GrowthField(const VoronoiProblem& problem)
 }
 
 double GrowthField::speed(int node, const Eigen::Vector2d& N) const {
-  return uniform_ ? metric_speed(metric_.inverse(0), N) : metric_.stencil_speed(stencil_[node], N);
+  return metric_.uniform() ? metric_speed(metric_.inverse(0), N)
+                           : metric_.stencil_speed(stencil_[node], N);
 }
 
 }  // namespace homesh

@@ -42,8 +42,7 @@ class GrowthField {
   Eigen::VectorXd domain_;
   std::vector<std::uint8_t> zone_;
   std::vector<Eigen::Vector2d> normal_;
-  bool uniform_ = false;  ///< one metric everywhere: no stencils
-  std::vector<ShepardStencil> stencil_;
+  std::vector<ShepardStencil> stencil_;  ///< none if the metric is uniform
   int inside_count_ = 0;
 };
 

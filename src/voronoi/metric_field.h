@@ -75,6 +75,8 @@ class MetricField {
   /// of 1/sqrt(lambda_min) and 1/sqrt(lambda_max).
   double max_speed() const { return max_speed_; }
   double min_speed() const { return min_speed_; }
+  /// The same tensor at every coarse node.
+  bool uniform() const { return uniform_; }
 
  private:
   CartesianGrid coarse_;
@@ -82,6 +84,7 @@ class MetricField {
   std::vector<Eigen::Matrix2d> Minv_;
   double max_speed_ = 0.0;
   double min_speed_ = 0.0;
+  bool uniform_ = true;
 };
 
 /// Extreme speeds 1/sqrt(lambda_min), 1/sqrt(lambda_max) of one SPD metric.

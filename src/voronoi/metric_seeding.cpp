@@ -64,13 +64,7 @@ Eigen::Matrix2Xd metric_interior_seeds(const CartesianGrid& g, const Eigen::Vect
   const auto domain_at = [&](const Eigen::Vector2d& p) {
     if (domain.size() == 0)
       return -std::min({p.x() - lo.x(), p.y() - lo.y(), hi.x() - p.x(), hi.y() - p.y()});
-    const double u = std::clamp((p.x() - lo.x()) / g.dx, 0.0, g.nx - 1.0);
-    const double v = std::clamp((p.y() - lo.y()) / g.dy, 0.0, g.ny - 1.0);
-    const int i = std::min(static_cast<int>(u), g.nx - 2);
-    const int j = std::min(static_cast<int>(v), g.ny - 2);
-    const double a = u - i, b = v - j;
-    return (1 - a) * (1 - b) * domain(g.index(i, j)) + a * (1 - b) * domain(g.index(i + 1, j)) +
-           a * b * domain(g.index(i + 1, j + 1)) + (1 - a) * b * domain(g.index(i, j + 1));
+    return bilinear_at(g, domain, p);
   };
   // The metric ball of radius r round q inside the domain, tested at 16
   // points of its boundary: the metric distance to the boundary is >= r.

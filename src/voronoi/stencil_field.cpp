@@ -13,12 +13,10 @@ StencilField::StencilField(const VoronoiProblem& problem)
       domain_(problem.domain),
       metric_(problem.metric),
       seed_metrics_(problem.seed_metrics) {
+  check_domain_size(problem);
   const CartesianGrid& g = grid_;
   const int n = g.node_count();
   if (has_domain()) {
-    if (domain_.size() != n)
-      throw Error("voronoi: domain has " + std::to_string(domain_.size()) + " values for " +
-                  std::to_string(n) + " grid nodes");
     inside_.resize(n);
     for (int k = 0; k < n; ++k) inside_[k] = domain_(k) <= 0.0;
   }
@@ -31,10 +29,7 @@ StencilField::StencilField(const VoronoiProblem& problem)
       shared_.push_back(lattice_stencil(M, g.dx, g.dy));
     return;
   }
-  bool uniform = true;
-  for (int k = 1; k < metric_.coarse().node_count(); ++k)
-    uniform = uniform && metric_.metric(k) == metric_.metric(0);
-  if (uniform) {
+  if (metric_.uniform()) {
     shared_.push_back(lattice_stencil(metric_.metric(0), g.dx, g.dy));
     return;
   }
@@ -94,15 +89,7 @@ StencilField::Local StencilField::local(int s, int x, int k) const {
 }
 
 double StencilField::domain_at(const Eigen::Vector2d& p) const {
-  if (!has_domain()) return 0.0;
-  const CartesianGrid& g = grid_;
-  const double u = std::clamp((p.x() - g.origin.x()) / g.dx, 0.0, g.nx - 1.0);
-  const double v = std::clamp((p.y() - g.origin.y()) / g.dy, 0.0, g.ny - 1.0);
-  const int i = std::min(static_cast<int>(u), g.nx - 2),
-            j = std::min(static_cast<int>(v), g.ny - 2);
-  const double a = u - i, b = v - j;
-  return (1 - a) * (1 - b) * domain_(g.index(i, j)) + a * (1 - b) * domain_(g.index(i + 1, j)) +
-         a * b * domain_(g.index(i + 1, j + 1)) + (1 - a) * b * domain_(g.index(i, j + 1));
+  return has_domain() ? bilinear_at(grid_, domain_, p) : 0.0;
 }
 
 bool StencilField::passable(int x, int z, double euclid) const {

@@ -44,6 +44,10 @@ struct VoronoiProblem {
   Contact contact = Contact::dry;
 };
 
+/// Throws homesh::Error unless problem.domain is empty or holds one value
+/// per grid node.
+void check_domain_size(const VoronoiProblem& problem);
+
 /// Options shared by the engines; an engine ignores those it has no use for.
 struct VoronoiOptions {
   /// Smallest semi-axis of the initial seed crystal, a ball of the metric at

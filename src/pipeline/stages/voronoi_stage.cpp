@@ -13,15 +13,18 @@
 #include "core/error.h"
 #include "gmsh/boundary_sampling.h"
 #include "gmsh/gmsh_call.h"
+#include "gmsh/metric_view.h"
 #include "pipeline/stage_registry.h"
 #include "voronoi/conforming_dual.h"
 #include "voronoi/curve_division.h"
+#include "voronoi/lloyd_relaxation.h"
 #include "voronoi/loop_distance.h"
 #include "voronoi/metric_seeding.h"
 #include "voronoi/refine_dual.h"
 #include "voronoi/size_metric.h"
 #include "voronoi/voronoi_engines.h"
 #include "voronoi/voronoi_files.h"
+#include "voronoi/window_regrowth.h"
 
 namespace homesh {
 namespace {
@@ -34,6 +37,7 @@ constexpr double kCellsPerSize = 6.0;  // automatic grid: smallest size over thi
 constexpr int kGridMin = 200, kGridMax = 1500;
 constexpr int kCoarseMax = 400;     // coarse metric grid nodes along the longer side, at most
 constexpr double kBandCells = 8.0;  // the domain's distance is exact this many cells out
+constexpr int kLloydCoarsening = 2;  // Lloyd's iteration on a grid this many times coarser
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -109,17 +113,21 @@ CartesianGrid grid_over(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, in
 }
 
 // The metric field of option `metric`: iso (sizes of Gmsh's default mesh,
-// `reference`), bl (that, fine across the walls) or a file.
+// `reference`), bl (that, fine across the walls), a Gmsh tensor view (probed
+// on the coarse grid of iso) or a file.
 MetricField make_metric(const std::string& metric, const Mesh& reference, const Eigen::Vector2d& lo,
                         const Eigen::Vector2d& hi, const SeededBoundary* walls_from,
                         const std::vector<int>& walls) {
-  if (metric != "iso" && metric != "bl") return read_metric_file(metric);
+  const bool view = gmsh_adapter::names_metric_view(metric);
+  if (metric != "iso" && metric != "bl" && !view) return read_metric_file(metric);
   const Eigen::MatrixXi tri = reference.tri.topRows(3);
   const Eigen::VectorXd h = mean_edge_length(reference.x, tri);
   const double h_min = (h.array() > 0).select(h.array(), h.maxCoeff()).minCoeff();
   const int n = std::clamp(static_cast<int>(std::ceil((hi - lo).maxCoeff() / (0.5 * h_min))) + 1,
                            16, kCoarseMax);
   const CartesianGrid coarse = grid_over(lo, hi, n, 1);
+  if (view)
+    return gmsh_adapter::metric_from_view(gmsh_adapter::metric_view_tag(metric), coarse);
   const MetricField iso = iso_metric_from_sizes(coarse, reference.x, h, tri);
   if (metric == "iso") return iso;
   std::vector<Eigen::Matrix2Xd> polylines;
@@ -167,6 +175,7 @@ void run(Context& ctx, const Options& opt) {
   const std::string seeds_name = opt.get_string("seeds");
   const std::string engine = opt.get_string("engine");
   const int grid_option = opt.get_int("grid", 0, 20000);
+  const int lloyd = opt.get_int("lloyd", 0, 100);
   if (grid_option > 0 && grid_option < 32)
     throw Error("stage 'voronoi': option grid must be 0 (automatic) or at least 32");
   try {
@@ -250,9 +259,20 @@ void run(Context& ctx, const Options& opt) {
         seeds_name == "auto"
             ? metric_interior_seeds(p.grid, p.domain, metric, bseeds)
             : file_seeds(seeds_name, list, loops, p.grid, p.domain, bseeds, list_used);
-    const double seeding_time = seconds_since(seeding);
     p.seeds.resize(2, bseeds.cols() + interior.cols());
     p.seeds << bseeds, interior;
+    if (seeds_name == "auto" && lloyd > 0) {
+      // On a grid kLloydCoarsening times coarser: a centroid needs far fewer
+      // cells per region than a dual triangle does.
+      VoronoiProblem coarse = p;
+      coarse.grid = grid_over(loops.lo, loops.hi, std::max(kGridMin, n / kLloydCoarsening), 3);
+      coarse.domain =
+          loop_signed_distance(coarse.grid, loops.polygons, kBandCells * coarse.grid.ds());
+      LloydOptions o;
+      o.iterations = lloyd;
+      p.seeds = lloyd_relaxation(coarse, static_cast<int>(bseeds.cols()), engine, o);
+    }
+    const double seeding_time = seconds_since(seeding);
 
     const auto growth = Clock::now();
     const RefinedDual r = refine_dual(p, engine);
@@ -260,8 +280,15 @@ void run(Context& ctx, const Options& opt) {
     std::vector<std::array<int, 2>> segments;
     for (const auto& [a, b] : loops.segments)
       segments.push_back({node_to_local[a], node_to_local[b]});
-    const ConformingTriangulation c =
-        conforming_triangulation(r.seeds, segments, r.result.dual.triangles);
+    // Where the dual misses the boundary, a finer grid round the spot.
+    p.seeds = r.seeds;
+    const RegrownDual w = regrow_windows(
+        p, r.result.dual.triangles, r.result.dual.vertices, segments,
+        [&](const CartesianGrid& g) {
+          return loop_signed_distance(g, loops.polygons, kBandCells * g.ds());
+        },
+        engine);
+    const ConformingTriangulation c = conforming_triangulation(w.seeds, segments, w.triangles);
 
     int added = 0;
     for (const int a : r.added) added += a;
@@ -269,13 +296,21 @@ void run(Context& ctx, const Options& opt) {
         "voronoi: surface {}: grid {} x {} (ds {:.4g}), {} boundary + {} interior seeds ({}, "
         "{:.2f} s), engine {} {:.2f} s",
         surface.tag, p.grid.nx, p.grid.ny, p.grid.ds(), bseeds.cols(), interior.cols(),
-        seeds_name == "auto" ? "Poisson-disc in the metric" : seeds_name, seeding_time, engine,
-        growth_time);
+        seeds_name != "auto" ? seeds_name
+        : lloyd > 0 ? fmt::format("Poisson-disc in the metric, {} Lloyd iterations", lloyd)
+                    : std::string("Poisson-disc in the metric"),
+        seeding_time, engine, growth_time);
     ctx.log.info(
         "voronoi: surface {}: dual {} triangles, check {} after {} refinement rounds (+{} "
         "seeds at faulty triple points)",
         surface.tag, r.result.dual.triangles.size(), r.ok() ? "passed" : "FAILED", r.added.size(),
         added);
+    if (w.windows > 0)
+      ctx.log.info(
+          "voronoi: surface {}: the dual missed {} boundary segments: regrown in {} windows "
+          "(finer grids of up to {} nodes per side), +{} seeds",
+          surface.tag, missed_segments(segments, r.result.dual.triangles).size(), w.windows,
+          w.window_nodes, w.seeds.cols() - r.seeds.cols());
     if (c.filled > 0 || c.dual_dropped > 0)
       ctx.log.info(
           "voronoi: surface {}: the dual does not conform: {} of {} boundary segments missing "
@@ -290,9 +325,9 @@ void run(Context& ctx, const Options& opt) {
 
     // Interior and added seeds become nodes of the surface.
     std::vector<int> to_node(local_to_node);
-    for (Eigen::Index k = bseeds.cols(); k < r.seeds.cols(); ++k) {
+    for (Eigen::Index k = bseeds.cols(); k < w.seeds.cols(); ++k) {
       to_node.push_back(static_cast<int>(nodes.size()));
-      nodes.push_back(r.seeds.col(k));
+      nodes.push_back(w.seeds.col(k));
       m.node_class.push_back({2, surface.tag, std::numeric_limits<double>::quiet_NaN()});
     }
     for (const auto& t : c.triangles) {
@@ -358,11 +393,15 @@ Stage voronoi_stage() {
           "(thesis Ch 2; replaces any mesh)",
           {{"metric", "iso",
             "iso (the sizes of the mesh stage's default mesh) | bl (iso, 5 times finer across "
-            "the walls: curves not in a group 'farfield') | FILE (a coarse grid of 2x2 SPD "
-            "tensors, format in src/voronoi/voronoi_files.h)"},
+            "the walls: curves not in a group 'farfield') | viewN (the tensor view of tag N, "
+            "e.g. merged by the .geo) | FILE.pos or FILE.msh (its last view, a tensor field) "
+            "| FILE (a coarse grid of 2x2 SPD tensors, format in src/voronoi/voronoi_files.h)"},
            {"seeds", "auto",
             "auto (Poisson-disc in the metric) | FILE (interior seeds, one 'x y' per line; the "
             "boundary seeds are placed from the metric)"},
+           {"lloyd", "3",
+            "Lloyd iterations on the auto seeds: each interior seed moves to the metric "
+            "centroid of its region (0: none)"},
            {"engine", "fast_marching", "fast_marching | level_set"},
            {"grid", "0",
             "grid nodes along the longer side (0: the smallest size over 6 cells, 200 to 1500)"}},
