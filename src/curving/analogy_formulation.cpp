@@ -123,6 +123,23 @@ ElasticityCoefficients stiff_q17(const Mesh& m, const Mesh&, const FormulationPa
   return c;
 }
 
+// homesh extension: E = (q / q0)^-power, q the worst shape quality of the
+// element (Q11 = 2 / (|W|_F |W^-1|_F), Eq 3.44, over the order-2p lattice) and
+// q0 its value on the initial mesh, the ratio capped to [1e-3, 1]. Unlike
+// min Q17 / max Q17, which sees only the variation of det J inside an element
+// and stays 1 for a uniformly sheared straight-sided element, Q11 sees the
+// shear itself; dividing by q0 stiffens the elements the deformation has
+// distorted, not those that started out poor. The stiffening of elements by
+// their deformation follows Jacobian-based stiffening (Stein, Tezduyar and
+// Benney, J. Appl. Mech. 70, 2003).
+ElasticityCoefficients stiff_shape(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
+  ElasticityCoefficients c = base(p);
+  const Eigen::VectorXd q = element_distortion(m).shape, q0 = element_distortion(initial).shape;
+  const Eigen::VectorXd ratio = q.cwiseQuotient(q0.cwiseMax(1e-12)).cwiseMin(1.0);
+  c.young = per_element(inverse_ratio(ratio).array().pow(p.power).matrix());
+  return c;
+}
+
 }  // namespace
 
 const std::vector<AnalogyFormulation>& analogy_formulations() {
@@ -138,6 +155,8 @@ const std::vector<AnalogyFormulation>& analogy_formulations() {
        metric_ideal},
       {"stiff_q17", "case 8: E = (min Q17/max Q17)^-power (thesis: power 1), no added terms", stiff_q17},
       {"heat_area", "Section 4.4.2: E = 1, T = 1/Ae", heat_area},
+      {"stiff_shape", "homesh: E = (min Q11 / initial min Q11)^-power, shear-aware stiffening",
+       stiff_shape},
   };
   return table;
 }

@@ -22,6 +22,7 @@ struct FormulationParams {
   double poisson = 0.4;  ///< nu
   double heat = 1.0;     ///< scale of the added terms (body force, heat), see above
   /// Exponent of the stiffening E = (min Q17 / max Q17)^-power of stiff_q17
+  /// (and of stiff_shape's E = (q / q0)^-power)
   /// (thesis case 8: power 1; higher powers stiffen distorted elements harder,
   /// a homesh extension measured by scripts/rotation_benchmark.py).
   double power = 1.0;
@@ -38,8 +39,9 @@ struct AnalogyFormulation {
 };
 
 /// All formulations: plain, area, force_q17, heat_q17, heat_q4, metric_ref,
-/// metric_ideal, stiff_q17 (Table 4.9 cases 1-8) and heat_area (T = 1/Ae,
-/// Section 4.4.2).
+/// metric_ideal, stiff_q17 (Table 4.9 cases 1-8), heat_area (T = 1/Ae,
+/// Section 4.4.2) and stiff_shape (homesh: E from the loss of Q11 shape
+/// quality since the start, the best on the rotation benchmark).
 const std::vector<AnalogyFormulation>& analogy_formulations();
 
 /// The names of all formulations joined by " | ", for option help texts.

@@ -15,6 +15,10 @@ struct ElementDistortion {
   /// max det J, sampled at the nodes of the order-2p reference lattice
   /// (corners included). 1 for a straight-sided element, <= 0 if invalid.
   Eigen::VectorXd q17_ratio;
+  /// #triangles min over the same lattice of the shape quality Q11 =
+  /// 2 / (|W|_F |W^-1|_F) (Eq 3.44; 1 for the equilateral element), 0 where
+  /// det J <= 0.
+  Eigen::VectorXd shape;
 };
 
 /// Area and Q17 variation of every triangle of m.

@@ -58,6 +58,28 @@ TEST_CASE("rotate: the plate's hole turns 10 degrees, the output is that state, 
   std::remove((out + ".opt").c_str());
 }
 
+namespace {
+int theta_max_on_fig413(const std::string& rotate_options) {
+  const auto r = run_homesh(geo + "plate_hole_fig413.geo -m mesh -m curve:p=2 -m rotate:" +
+                            rotate_options);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(r.output, m, std::regex(R"(rotate: theta_max = (\d+) deg)")));
+  return std::stoi(m[1]);
+}
+}  // namespace
+
+// Issue 4's goal: our best formulation passes the thesis' best at nu = 0.45
+// (case 7, 147 degrees, Table 4.7) on the Fig 4.13 plate (geo/README.md).
+TEST_CASE("rotate: stiff_shape passes the thesis' best at nu = 0.45 and beats case 8",
+          "[app][rotate]") {
+  const int shape = theta_max_on_fig413("nu=0.45:formulation=stiff_shape:power=2");
+  CHECK(shape == 154);
+  CHECK(shape > 147);
+  CHECK(shape > theta_max_on_fig413("nu=0.45:formulation=stiff_q17"));
+}
+
 TEST_CASE("rotate: an unknown wall lists the physical curves; bad options refused", "[app]") {
   const std::string base = geo + "plate_hole.geo -m mesh:factor=2 -m order:p=2 -m rotate:";
   auto r = run_homesh(base + "wall=magic");
