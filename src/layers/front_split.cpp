@@ -75,10 +75,10 @@ FrontSplit split_front(const Mesh& m, const std::vector<WallLoop>& loops,
 
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const WallLoop& loop = loops[l];
-    const int n = static_cast<int>(loop.nodes.size());
+    const int n = loop.size();
     s.front.emplace_back(n);
     for (int i = 0; i < n; ++i) {
-      const int v = loop.nodes[i], w = loop.nodes[(i + 1) % n], u = loop.nodes[(i + n - 1) % n];
+      const int v = loop.nodes[i], w = loop.next(i), u = loop.prev(i);
       const WallNormal& normal = normals[l][i];
       const int count = static_cast<int>(normal.directions.size());
       ring(m, around[v], v, w, u, loop.triangles[i], tris, nodes);

@@ -3,7 +3,9 @@
 // elastic analogy pushes the boundary into the domain, every wall node gets a
 // front node for each of its normals, and the existing triangles are re-attached
 // to the front nodes, so the walls (nodes, lines, classification) stay put and
-// the room opened between wall and front is later filled with layers.
+// the room opened between wall and front is later filled with layers. At the
+// ends of an open wall the triangles fan from the wall edge to the adjacent
+// boundary edge, and the front node takes them all.
 //
 // At a single-normal node the front node starts at the wall node and takes all
 // its triangles. At a fan of m normals (Fig 4.7) the triangles around the wall

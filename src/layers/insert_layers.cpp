@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "core/error.h"
@@ -55,6 +56,54 @@ void add_quad(const Eigen::Matrix2Xd& x, int p0, int p1, int p2, int p3, int sur
   }
 }
 
+// The normal line of node i of a loop (its first, for a fan) among `lines`, which
+// list the loops' normals in order.
+int line_of(const std::vector<std::vector<std::vector<int>>>& front, std::size_t loop, int i) {
+  int k = 0;
+  for (std::size_t l = 0; l < loop; ++l)
+    for (const auto& f : front[l]) k += static_cast<int>(f.size());
+  for (int j = 0; j < i; ++j) k += static_cast<int>(front[loop][j].size());
+  return k;
+}
+
+// At each end of an open wall: the layer and front nodes on the normal line lie
+// on the adjacent boundary line, which is split at them (n + 1 lines, its curve
+// and direction kept), and they are classified on its curve, the parameter
+// interpolated linearly between the line's ends (NaN unless both are on it).
+void split_end_lines(const std::vector<WallLoop>& loops,
+                     const std::vector<std::vector<std::vector<int>>>& front,
+                     const std::vector<LayerLine>& lines, Mesh& out) {
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const WallLoop& loop = loops[l];
+    if (loop.closed) continue;
+    for (int end = 0; end < 2; ++end) {
+      const int i = end == 0 ? 0 : loop.size() - 1;
+      const int k = loop.end_lines[end], c = out.line_entity[k];
+      const LayerLine& line = lines[line_of(front, l, i)];
+      std::vector<int> chain = line.nodes;
+      chain.push_back(loop.ends[end]);
+      auto param = [&](int v) {
+        const NodeClass& nc = out.node_class[v];
+        return nc.dim == 1 && nc.tag == c ? nc.u : std::numeric_limits<double>::quiet_NaN();
+      };
+      const Eigen::Vector2d p0 = out.x.col(chain.front()), p1 = out.x.col(chain.back());
+      const double u0 = param(chain.front()), u1 = param(chain.back());
+      for (std::size_t j = 1; j + 1 < chain.size(); ++j) {
+        const double t = (out.x.col(chain[j]) - p0).norm() / (p1 - p0).norm();
+        out.node_class[chain[j]] = {1, c, (1 - t) * u0 + t * u1};
+      }
+      if (out.line(0, k) != chain.front()) std::reverse(chain.begin(), chain.end());
+      const int segments = static_cast<int>(chain.size()) - 1, lines0 = out.num_lines();
+      out.line.conservativeResize(2, lines0 + segments - 1);
+      out.line.col(k) << chain[0], chain[1];
+      for (int j = 1; j < segments; ++j) {
+        out.line.col(lines0 + j - 1) << chain[j], chain[j + 1];
+        out.line_entity.push_back(c);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<double> layer_depths(double first, double ratio, int n) {
@@ -83,7 +132,7 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
   std::vector<std::vector<WallNormal>> normals;
   for (const WallLoop& loop : loops) {
     normals.push_back(wall_normals(m, loop, opt.normals));
-    r.wall_edges += static_cast<int>(loop.nodes.size());
+    r.wall_edges += loop.edges();
     for (std::size_t i = 0; i < loop.nodes.size(); ++i) {
       const WallNormal& w = normals.back()[i];
       r.fan_nodes += w.directions.size() > 1 ? 1 : 0;
@@ -94,6 +143,8 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
     }
   }
   r.loops = static_cast<int>(loops.size());
+  r.open_walls = static_cast<int>(
+      std::count_if(loops.begin(), loops.end(), [](const WallLoop& l) { return !l.closed; }));
   const FrontSplit split = split_front(m, loops, normals);
   r.gap_triangles = split.gap_triangles;
 
@@ -147,6 +198,7 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
     }
     line.nodes.push_back(moving[k]);
   }
+  split_end_lines(loops, split.front, r.lines, out);
 
   // Quads on the wall edges, fans at the sharp nodes.
   Triangles added;
@@ -160,7 +212,7 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
       const int surface = m.tri_entity[loops[l].triangles[i]];
       const LayerLine& a = r.lines[first_line + start[i]];
       const LayerLine& b = r.lines[first_line + start[(i + 1) % size + 1] - 1];
-      for (int k = 1; k <= n; ++k)
+      for (int k = 1; k <= n && i < loops[l].edges(); ++k)
         add_quad(out.x, a.nodes[k - 1], b.nodes[k - 1], b.nodes[k], a.nodes[k], surface, k, added);
       for (int j = start[i]; j + 1 < start[i + 1]; ++j) {
         const LayerLine& p = r.lines[first_line + j];

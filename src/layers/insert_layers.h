@@ -20,8 +20,13 @@
 // triangles of the split included), E the number of wall edges; node count:
 // V + n L, L the number of normal lines.
 //
+// Open walls (wall_loops.h) end on a non-wall boundary: their end normals run
+// along it (wall_normals.h), the end front nodes slide along it while the room
+// opens, and its boundary line at each end is split at the end's n nodes
+// (lines: + n per end), which are classified on its curve.
+//
 // The walls keep their nodes, classification (curve and parameter), lines,
-// points and physical groups; new nodes lie on the surface of the wall's
+// points and physical groups; other new nodes lie on the surface of the wall's
 // triangles, whose tag the layer triangles take. Meshes of order p > 1 are
 // reduced to their corners first (the result is linear; curve it afterwards).
 #include <Eigen/Core>
@@ -58,7 +63,8 @@ struct LayerResult {
   /// triangles next), k = 1..n for layer k from the wall.
   std::vector<int> layer;
   std::vector<LayerLine> lines;
-  int loops = 0;
+  int loops = 0;       ///< walls: closed loops and open chains
+  int open_walls = 0;  ///< of them open chains (wall_loops.h)
   int wall_edges = 0;
   int fan_nodes = 0;
   int gap_triangles = 0;

@@ -59,13 +59,27 @@ std::vector<WallLoop> wall_loops(const Mesh& m, const std::vector<int>& curves) 
 
   const int n = m.num_nodes();
   std::vector<int> next(n, -1), left(n, -1), curve(n, -1), incoming(n, 0);
+  // Non-wall boundary lines, directed with the domain on the left: index by end node.
+  std::vector<std::vector<int>> side_from(n), side_to(n);
+  std::vector<int> side_tail(m.num_lines(), -1), side_head(m.num_lines(), -1),
+      side_left(m.num_lines(), -1);
   int count = 0;
   for (int k = 0; k < m.num_lines(); ++k) {
-    if (!std::binary_search(curves.begin(), curves.end(), m.line_entity[k])) continue;
-    ++count;
+    const bool wall = std::binary_search(curves.begin(), curves.end(), m.line_entity[k]);
     const int a = m.line(0, k), b = m.line(1, k);
     const auto it = edges.find({std::min(a, b), std::max(a, b)});
     const std::size_t sides = it == edges.end() ? 0 : it->second.size();
+    if (!wall) {
+      if (sides != 1) continue;
+      const auto [e, forward] = it->second.front();
+      side_tail[k] = forward == (a < b) ? a : b;
+      side_head[k] = side_tail[k] == a ? b : a;
+      side_left[k] = e;
+      side_from[side_tail[k]].push_back(k);
+      side_to[side_head[k]].push_back(k);
+      continue;
+    }
+    ++count;
     if (sides != 1)
       throw Error("layers: the wall line from " + node_text(m, a) + " to " + node_text(m, b) +
                   " on curve " + std::to_string(m.line_entity[k]) + " bounds " +
@@ -83,27 +97,52 @@ std::vector<WallLoop> wall_loops(const Mesh& m, const std::vector<int>& curves) 
   }
   if (count == 0) throw Error("layers: the walls have no boundary lines in the mesh");
 
+  // The one non-wall boundary line at an open end.
+  auto end_line = [&](int v, const std::vector<int>& lines) {
+    if (lines.size() != 1)
+      throw Error("layers: the open wall ends at " + node_text(m, v) + ", on " +
+                  std::to_string(lines.size()) +
+                  " other boundary lines; an open wall must end on exactly one (or close)");
+    return lines.front();
+  };
+
   std::vector<WallLoop> loops;
   std::vector<bool> done(n, false);
-  for (int start = 0; start < n; ++start) {
-    if (next[start] < 0 || done[start]) continue;
-    WallLoop loop;
-    int v = start;
-    while (!done[v]) {
-      if (next[v] < 0)
-        throw Error("layers: the wall ends at " + node_text(m, v) +
-                    "; walls must form closed loops (choose all curves around the wall)");
-      done[v] = true;
-      loop.nodes.push_back(v);
-      loop.triangles.push_back(left[v]);
-      loop.curves.push_back(curve[v]);
-      v = next[v];
+  std::vector<bool> used(m.num_lines(), false);
+  for (const bool open : {true, false})
+    for (int start = 0; start < n; ++start) {
+      if (next[start] < 0 || done[start] || (open && incoming[start] > 0)) continue;
+      WallLoop loop;
+      loop.closed = !open;
+      int v = start;
+      while (v >= 0 && !done[v]) {
+        done[v] = true;
+        loop.nodes.push_back(v);
+        loop.triangles.push_back(left[v]);
+        loop.curves.push_back(curve[v]);
+        if (open && next[v] < 0) {
+          const int k = end_line(v, side_from[v]);
+          loop.ends[1] = side_head[k];
+          loop.end_lines[1] = k;
+          loop.triangles.back() = side_left[k];
+          loop.curves.back() = m.line_entity[k];
+        }
+        v = next[v];
+      }
+      if (open) {
+        const int k = end_line(start, side_to[start]);
+        loop.ends[0] = side_tail[k];
+        loop.end_lines[0] = k;
+        for (const int line : loop.end_lines) {
+          if (used[line])
+            throw Error("layers: the boundary line from " + node_text(m, m.line(0, line)) +
+                        " to " + node_text(m, m.line(1, line)) +
+                        " ends two open walls; mesh it with more than one line");
+          used[line] = true;
+        }
+      }
+      loops.push_back(std::move(loop));
     }
-    if (v != start)
-      throw Error("layers: the wall from " + node_text(m, start) + " joins a loop at " +
-                  node_text(m, v) + " without closing; walls must form closed loops");
-    loops.push_back(std::move(loop));
-  }
   return loops;
 }
 

@@ -36,14 +36,37 @@ WallNormal wall_normal(const Eigen::Vector2d& prev, const Eigen::Vector2d& x,
   return w;
 }
 
+WallNormal wall_end_normal(const Eigen::Vector2d& side, const Eigen::Vector2d& x,
+                           const Eigen::Vector2d& wall, bool start, const NormalOptions& opt) {
+  NormalOptions single = opt;
+  single.multi = false;
+  WallNormal w = start ? wall_normal(side, x, wall, single) : wall_normal(wall, x, side, single);
+  if (!(w.angle < opt.max_end_angle * M_PI / 180))
+    throw Error("layers: the open wall ends at " + layers_detail::point_text(x) +
+                " at a domain angle of " + layers_detail::number_text(w.angle * 180 / M_PI) +
+                " deg to the next boundary, not below max_end_angle = " +
+                layers_detail::number_text(opt.max_end_angle) +
+                " deg, so its layers cannot end along that boundary");
+  w.directions = {(side - x).normalized()};
+  w.scale = std::min(1 / std::sin(w.angle), opt.max_scale);
+  return w;
+}
+
 std::vector<WallNormal> wall_normals(const Mesh& m, const WallLoop& loop,
                                      const NormalOptions& opt) {
-  const int n = static_cast<int>(loop.nodes.size());
+  const int n = loop.size();
   std::vector<WallNormal> normals;
   normals.reserve(n);
-  for (int i = 0; i < n; ++i)
-    normals.push_back(wall_normal(m.x.col(loop.nodes[(i + n - 1) % n]), m.x.col(loop.nodes[i]),
-                                  m.x.col(loop.nodes[(i + 1) % n]), opt));
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d prev = m.x.col(loop.prev(i)), x = m.x.col(loop.nodes[i]),
+                          next = m.x.col(loop.next(i));
+    if (!loop.closed && i == 0)
+      normals.push_back(wall_end_normal(prev, x, next, true, opt));
+    else if (!loop.closed && i == n - 1)
+      normals.push_back(wall_end_normal(next, x, prev, false, opt));
+    else
+      normals.push_back(wall_normal(prev, x, next, opt));
+  }
   return normals;
 }
 

@@ -15,6 +15,11 @@
 //    normals at equal angles from the normal of the outgoing edge
 //    (theta_1 = 90 deg) to that of the incoming edge (theta_m = theta - 90 deg),
 //    the middle one on the bisector; equidistant displacement (s = 1).
+//  - At the ends of an open wall the normal runs along the adjacent non-wall
+//    boundary edge, so the layer's end nodes slide along that boundary and the
+//    layers end on it; s = min(1 / sin theta, max_scale) keeps the depth d from
+//    the wall edge (theta the angle between wall edge and boundary edge, which
+//    must stay below max_end_angle).
 #include <Eigen/Core>
 #include <cmath>
 #include <vector>
@@ -29,6 +34,7 @@ struct NormalOptions {
   int fan = 5;                ///< normals per fan: odd, >= 3
   double fan_angle = 330;     ///< degrees, in [180, 360)
   double max_scale = M_SQRT2; ///< cap of the single-normal miter 1 / sin(theta / 2)
+  double max_end_angle = 160; ///< degrees, largest domain angle at the end of an open wall
 };
 
 /// The normals at one wall node.
@@ -45,7 +51,14 @@ struct WallNormal {
 WallNormal wall_normal(const Eigen::Vector2d& prev, const Eigen::Vector2d& x,
                        const Eigen::Vector2d& next, const NormalOptions& opt = {});
 
-/// #loop nodes normals at the nodes of a loop of m.
+/// The normal at the end x of an open wall: along the boundary edge from x to
+/// `side`, the wall edge from x to `wall` (start: side = prev, wall = next; end:
+/// the other way round), as above. Throws homesh::Error, naming x, if the domain
+/// angle between them is max_end_angle or more.
+WallNormal wall_end_normal(const Eigen::Vector2d& side, const Eigen::Vector2d& x,
+                           const Eigen::Vector2d& wall, bool start, const NormalOptions& opt = {});
+
+/// #loop nodes normals at the nodes of a loop of m (open ends by wall_end_normal).
 std::vector<WallNormal> wall_normals(const Mesh& m, const WallLoop& loop,
                                      const NormalOptions& opt = {});
 

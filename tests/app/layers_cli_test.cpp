@@ -2,11 +2,14 @@
 // boundary layers opened by the elastic analogy, then curved, certified valid.
 #include <gmsh.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <regex>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "gmsh/read_model.h"
 #include "../support/gmsh_session.h"
@@ -113,6 +116,44 @@ TEST_CASE("layers: 5 normals at the trailing edge beat a single one (Figs 4.10, 
   CHECK(multi.corner_triangles == 4 * 4 + (5 - 1) * (2 * 4 - 1));
   CHECK(single.corner_q < 0.1);
   CHECK(multi.corner_q > 0.3);
+  remove_output(out);
+}
+
+TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p = 3, valid", "[app]") {
+  const std::string out = "/tmp/homesh_layers_channel.msh";
+  const auto r = run_homesh(geo + "channel.geo -m mesh -m layers:walls=wall:n=5:first=1e-3:"
+                                  "ratio=1.3 -m curve:p=3 -m quality " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
+  REQUIRE(r.output.find("1 of the walls open") != std::string::npos);
+  const LayerLog l = parse(r.output);
+  CHECK(l.after == l.before + 2 * 5 * l.wall_edges);
+  std::smatch q;
+  REQUIRE(std::regex_search(r.output, q, std::regex(R"(validity: .* worst minJ/maxJ (\d\.\d+))")));
+  CHECK(std::stod(q[1]) > 0.98);  // measured 0.9877
+
+  // The inlet (curve 6) is split at the layer nodes: its corners below the thickness
+  // d_5 = 0.0090431 are the floor's end, the 4 layer nodes and the front node, at the
+  // depths d_k = 1e-3 (1.3^k - 1) / 0.3, all on x = 0.
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  const homesh::Mesh m = homesh::gmsh_adapter::read_model(out);
+  REQUIRE(m.order == 3);
+  std::set<int> corners;
+  double off = 0;
+  for (int k = 0; k < m.num_lines(); ++k) {
+    if (m.line_entity[k] != 6) continue;
+    for (int j = 0; j <= 3; ++j) off = std::max(off, std::abs(m.x(0, m.line(j, k))));
+    corners.insert({m.line(0, k), m.line(1, k)});
+  }
+  std::vector<double> low;
+  for (int i : corners)
+    if (m.x(1, i) < 0.0091) low.push_back(m.x(1, i));
+  std::sort(low.begin(), low.end());
+  REQUIRE(low.size() == 6);
+  for (int k = 0; k <= 5; ++k) CHECK(low[k] == Approx(1e-3 * (std::pow(1.3, k) - 1) / 0.3).margin(1e-12));
+  CHECK(off < 1e-12);
   remove_output(out);
 }
 

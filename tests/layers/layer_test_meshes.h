@@ -1,9 +1,10 @@
 #pragma once
 // Small linear meshes for the boundary-layer tests, built without Gmsh: a
-// structured O-mesh between two closed loops and a square-cell grid. Both
+// structured O-mesh between two closed loops and a square-cell grid, which
 // classify walls on curve 1 (physical "wall"), the other boundary on curve 2
-// (physical "outer"), the triangles on surface 1 (physical "fluid"), and list
-// counter-clockwise triangles.
+// (physical "outer"), and a four-sided channel (curves "wall", "outlet", "top",
+// "inlet"). All put the triangles on surface 1 (physical "fluid") and list them
+// counter-clockwise.
 #include <Eigen/Core>
 #include <cmath>
 #include <functional>
@@ -123,6 +124,53 @@ inline Mesh grid_mesh(int nx, int ny, double h, const std::function<bool(int, in
   for (std::size_t e = 0; e < tris.size(); ++e) m.tri.col(e) = tris[e];
   m.tri_entity.assign(tris.size(), 1);
   set_groups(m);
+  return m;
+}
+
+/// A structured nx by ny channel on the image of the unit square under
+/// map(s, t) (orientation-preserving, straight sides), each cell split into two
+/// triangles. Curves, counter-clockwise, with parameter u = arc length from
+/// their first corner: 1 bottom t = 0 ("wall"), 2 right s = 1 ("outlet"), 3 top
+/// t = 1 ("top"), 4 left s = 0 ("inlet"); points 1-4 at the corners (0, 0),
+/// (1, 0), (1, 1), (0, 1) of the square. Node (i, j) is j (nx + 1) + i.
+inline Mesh channel_mesh(int nx, int ny,
+                         const std::function<Eigen::Vector2d(double, double)>& map) {
+  Mesh m;
+  const int w = nx + 1;
+  m.x.resize(2, w * (ny + 1));
+  m.node_class.assign(m.x.cols(), {2, 1});
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) m.x.col(j * w + i) = map(double(i) / nx, double(j) / ny);
+  m.tri.resize(3, 2 * nx * ny);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * w + i, b = a + 1, c = b + w, d = a + w;
+      m.tri.col(2 * (j * nx + i)) << a, b, c;
+      m.tri.col(2 * (j * nx + i) + 1) << a, c, d;
+    }
+  m.tri_entity.assign(m.tri.cols(), 1);
+  // The sides from corner to corner: (first node, step, count of lines).
+  const int side[4][3] = {{0, 1, nx}, {nx, w, ny}, {w * (ny + 1) - 1, -1, nx}, {ny * w, -w, ny}};
+  for (int c = 0; c < 4; ++c) {
+    const auto [first, step, count] = side[c];
+    double u = 0;
+    for (int k = 0; k < count; ++k) {
+      const int a = first + k * step, b = a + step;
+      m.line.conservativeResize(2, m.line.cols() + 1);
+      m.line.col(m.line.cols() - 1) << a, b;
+      m.line_entity.push_back(c + 1);
+      if (k > 0) m.node_class[a] = {1, c + 1, u};
+      u += (m.x.col(b) - m.x.col(a)).norm();
+    }
+    m.node_class[first] = {0, c + 1};
+    m.point_node.push_back(first);
+    m.point_entity.push_back(c + 1);
+  }
+  m.entities = {{0, 1, {}}, {0, 2, {}}, {0, 3, {}}, {0, 4, {}},
+                {1, 1, {1, -2}}, {1, 2, {2, -3}}, {1, 3, {3, -4}}, {1, 4, {4, -1}},
+                {2, 1, {1, 2, 3, 4}}};
+  m.physicals = {{1, 10, "wall", {1}}, {1, 11, "outlet", {2}}, {1, 12, "top", {3}},
+                 {1, 13, "inlet", {4}}, {2, 14, "fluid", {1}}};
   return m;
 }
 

@@ -131,17 +131,24 @@ TEST_CASE("wall loops and normals of a square hole in a square box", "[layers]")
   CHECK(corners == 8);
 }
 
-TEST_CASE("wall loops refuse unknown names, open walls and interfaces", "[layers]") {
+TEST_CASE("wall loops refuse unknown names and interfaces, chain open walls", "[layers]") {
   const Mesh m = box_with_hole();
   CHECK_THROWS_WITH(wall_curves(m, {"aerofoil"}),
                     Catch::Contains("no wall 'aerofoil'") && Catch::Contains("wall, outer"));
   CHECK_THROWS_WITH(wall_curves(m, {"7"}), Catch::Contains("no wall '7'"));
-  // Only the bottom side of the box: a chain that does not close.
+  // The bottom side of the box and the lowest lines of its sides: an open chain
+  // from (0, 0.5) to (2, 0.5) ending on the sides' other lines.
   Mesh open = m;
   for (int k = 0; k < open.num_lines(); ++k)
     if (open.line_entity[k] == 2 && open.x(1, open.line(0, k)) != 0 && open.x(1, open.line(1, k)) != 0)
       open.line_entity[k] = 3;
-  CHECK_THROWS_WITH(wall_loops(open, {2}), Catch::Contains("closed loops"));
+  const auto chain = wall_loops(open, {2});
+  REQUIRE(chain.size() == 1);
+  CHECK_FALSE(chain[0].closed);
+  CHECK(chain[0].edges() == 6);
+  CHECK((open.x.col(chain[0].prev(0)) - Eigen::Vector2d(0, 1)).norm() == 0);
+  CHECK((open.x.col(chain[0].next(6)) - Eigen::Vector2d(2, 1)).norm() == 0);
+  CHECK(open.line_entity[chain[0].end_lines[0]] == 3);
   // A line between two triangles is an interface, not a wall.
   Mesh inner = m;
   inner.line.col(0) << inner.tri(0, 0), inner.tri(2, 0);

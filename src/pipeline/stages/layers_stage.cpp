@@ -54,6 +54,9 @@ void run(Context& ctx, const Options& opt) {
   ctx.log.info("layers: {} layers on {} ({} loop(s), {} wall edges, {} fans), thickness {:.6g} "
                "(first {:g}, ratio {:g})", o.layers, walls, r.loops,
                r.wall_edges, r.fan_nodes, r.thickness, o.first, o.ratio);
+  if (r.open_walls > 0)
+    ctx.log.info("layers: {} of the walls open: their layers end along the boundary curves at "
+                 "their ends, whose lines are split at the layer nodes", r.open_walls);
   ctx.log.info("layers: room opened in {} elastic step(s) (formulation {}, nu {:g}), {} node "
                "move(s) smoothing squeezed triangles; {} -> {} triangles, {} -> {} nodes",
                r.push_steps, o.room.formulation, o.room.params.poisson, r.smoothed, triangles,
@@ -90,7 +93,8 @@ void run(Context& ctx, const Options& opt) {
 
 Stage layers_stage() {
   std::vector<OptionSpec> options = {
-      {"walls", "", "curve physical groups or tags the layers grow from, comma-separated"},
+      {"walls", "", "curve physical groups or tags the layers grow from, comma-separated: closed "
+                "loops, or open chains whose layers end along the boundary at their ends"},
       {"n", "3", "number of layers"},
       {"first", "1e-3", "thickness of the layer at the wall"},
       {"ratio", "1.2", "thickness ratio of consecutive layers"},
