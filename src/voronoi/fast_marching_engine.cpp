@@ -76,13 +76,47 @@ class TimeHeap {
   std::vector<Item> items_;
 };
 
+// The pending (time, entry) items in buckets of `width` in time, the current
+// bucket (and any item pushed below it) in a TimeHeap: items leave in exact
+// time order, as from one heap, but the heap holds one bucket's worth rather
+// than every front at once (with many seeds, megabytes out of cache).
+class BucketQueue {
+ public:
+  using Item = TimeHeap::Item;
+  explicit BucketQueue(double width) : width_(width) {}
+  // Whether no item is left; refills the heap from the next bucket first.
+  bool empty() {
+    while (heap_.empty() && current_ + 1 < buckets_.size()) {
+      std::vector<Item> next;
+      next.swap(buckets_[++current_]);
+      for (const Item& item : next) heap_.push(item);
+    }
+    return heap_.empty();
+  }
+  const Item& top() const { return heap_.top(); }
+  void pop() { heap_.pop(); }
+  void push(const Item& item) {
+    const std::size_t k = static_cast<std::size_t>(item.first / width_);
+    if (k <= current_) return heap_.push(item);
+    if (k >= buckets_.size()) buckets_.resize(k + 1);
+    buckets_[k].push_back(item);
+  }
+
+ private:
+  double width_;
+  std::size_t current_ = 0;
+  std::vector<std::vector<Item>> buckets_{1};
+  TimeHeap heap_;
+};
+
 class Sweep {
  public:
   Sweep(const StencilField& field, const Eigen::Matrix2Xd& seeds, std::vector<Eigen::Matrix2d> M)
       : field_(field),
         seeds_(seeds),
         seed_metric_(std::move(M)),
-        nodes_(field.grid().node_count()) {
+        nodes_(field.grid().node_count()),
+        heap_(bucket_width(field.grid(), seed_metric_)) {
     entries_.reserve(field.grid().node_count() + field.grid().node_count() / 4);
   }
 
@@ -122,6 +156,9 @@ class Sweep {
       const auto [t, e] = heap_.top();
       if (t > stop || (max_steps > 0 && steps_ >= max_steps)) return false;
       heap_.pop();
+      // The next entry is most likely the new top: fetch it while this one
+      // spreads (with many seeds consecutive entries lie far apart in memory).
+      if (!heap_.empty()) __builtin_prefetch(&entries_[heap_.top().second]);
 
       Entry& en = entries_[e];
       if (en.accepted || en.time != t) continue;
@@ -173,6 +210,15 @@ class Sweep {
   }
 
   long steps() const { return steps_; }
+
+  // Buckets of the time a front takes to cross a cell at the seeds' largest
+  // speed: about one layer of each front per bucket.
+  static double bucket_width(const CartesianGrid& g, const std::vector<Eigen::Matrix2d>& M) {
+    double fastest = 0.0;
+    for (const Eigen::Matrix2d& m : M) fastest = std::max(fastest, metric_max_speed(m));
+    return g.ds() / fastest;
+  }
+
   // The winning entry at a node, or -1.
   int winner(int node) const { return nodes_[node].winner; }
   const Entry& entry(int e) const { return entries_[e]; }
@@ -286,7 +332,7 @@ class Sweep {
     int winner_label = -1;
   };
   std::vector<NodeState> nodes_;
-  TimeHeap heap_;
+  BucketQueue heap_;
   long steps_ = 0;
 };
 
