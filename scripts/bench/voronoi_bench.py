@@ -3,7 +3,7 @@
 
 usage: scripts/bench/voronoi_bench.py CSV PNG
 
-Left: wall time against the number of seeds S, log-log, per method (CGAL
+Left: CPU time against the number of seeds S, log-log, per method (CGAL
 Delaunay, fast_marching, level_set), with the exponent p of time ~ S^p fitted
 by least squares over the points taking 10 ms or more. Right: the share of
 CGAL's triangles with their circumcentre in the square (those a partition of
@@ -52,7 +52,7 @@ def main():
         if m != "cgal":
             share.semilogx(s, [p[3] / max(p[4], 1) for p in pts], "o-", label=m)
     times.set_xlabel("seeds S")
-    times.set_ylabel("seconds")
+    times.set_ylabel("CPU seconds")
     times.set_title(f"crystal growth on a {grid} x {grid} grid vs CGAL Delaunay")
     times.grid(True, which="both", alpha=0.3)
     times.legend()
