@@ -22,6 +22,10 @@ struct Context {
   /// Named numbers the last stage reports (e.g. rotate's theta_max).
   std::map<std::string, double> results;
   Log log;
+  /// Lines recorded in the output's provenance after the command line: what a
+  /// reader of the file must know about how it was made (e.g. that the
+  /// boundary was rebuilt without CAD).
+  std::vector<std::string> notes;
   /// Write the output even if some element is not certified valid.
   bool keep_invalid = false;
 

@@ -109,7 +109,9 @@ void write_output(const std::string& path, const std::string& provenance, Contex
     const auto tags = gmsh_adapter::write_model(m);
     views = gmsh_adapter::add_views(ctx.fields, tags);
   });
-  gmsh_adapter::write_msh(path, views, provenance);
+  std::string record = provenance;
+  for (const std::string& note : ctx.notes) record += "\n" + note;
+  gmsh_adapter::write_msh(path, views, record);
   ctx.log.info("wrote {} (order {}, {} triangles, {} views)", path, m.order, m.num_triangles(),
                views.size());
 }

@@ -3,6 +3,8 @@
 #include <gmsh.h>
 
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
 #include <cmath>
 #include <cstdio>
 #include <regex>
@@ -76,6 +78,15 @@ TEST_CASE("curve: a bare .msh is curved onto splines rebuilt from its linear bou
                         "kept sharp): 1 closed loops, 4 open chains, 0 corners") !=
           std::string::npos);
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
+  {
+    // The file itself says its boundary was rebuilt, after the command line.
+    std::ifstream in(out);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto section = text.find("$HomeshProvenance");
+    REQUIRE(section != std::string::npos);
+    REQUIRE(text.find("boundary rebuilt from the linear mesh", section) <
+            text.find("$EndHomeshProvenance", section));
+  }
   {
     homesh::test::GmshSession session;
     gmsh::open(out);

@@ -13,8 +13,8 @@
 namespace homesh {
 namespace {
 
-// Boundary targets on splines rebuilt from the linear boundary, said in the log
-// and in ctx.results (boundary_rebuilt = 1, corner_degrees, the chain counts).
+// Boundary targets on splines rebuilt from the linear boundary, said in the log,
+// in the output's provenance (ctx.notes) and in ctx.results (boundary_rebuilt = 1, corner_degrees, the chain counts).
 Eigen::Matrix2Xd rebuilt_boundary(Context& ctx, const Mesh& raised, double corner) {
   if (raised.num_lines() == 0)
     throw Error("stage 'curve': " + ctx.input +
@@ -22,10 +22,12 @@ Eigen::Matrix2Xd rebuilt_boundary(Context& ctx, const Mesh& raised, double corne
   BoundaryReconstructionOptions b;
   b.corner_degrees = corner;
   const BoundaryReconstruction r = reconstruct_boundary(raised, b);
-  ctx.log.info(
+  const std::string note = fmt::format(
       "curve: no CAD in {}: boundary rebuilt from the linear mesh (cubic spline, corners > {:g} "
       "deg kept sharp): {} closed loops, {} open chains, {} corners",
       ctx.input, corner, r.closed_loops, r.chains, r.corners);
+  ctx.log.info("{}", note);
+  ctx.notes.push_back(note);
   ctx.results["boundary_rebuilt"] = 1;
   ctx.results["corner_degrees"] = corner;
   ctx.results["rebuilt_closed_loops"] = r.closed_loops;
