@@ -1,5 +1,7 @@
 #include "quality/mesh_quality.h"
 
+#include <omp.h>
+
 #include <Eigen/LU>
 #include <algorithm>
 #include <optional>
@@ -106,7 +108,7 @@ constexpr int kPrefetchAhead = 4;
 
 // The one loop over the triangles: bounds if `bounds`, measures if qs is not empty.
 MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
-                  Reference ref, const BoundsOptions* bounds) {
+                  Reference ref, const BoundsOptions* bounds, int threads) {
   const int p = m.order, n = m.num_triangles(), q = bezier_size(p - 1);
   std::optional<LatticeSampling> sampling;
   if (!qs.empty()) sampling.emplace(p, lattice);
@@ -125,7 +127,7 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
     out.element_min.resize(n);
     out.node_values.resize(triangle_node_count(p), n);
   }
-#pragma omp parallel
+#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
   {
     Eigen::Matrix2Xd X(2, triangle_node_count(p));
     JacobianControlPoints U(2, q), V(2, q);
@@ -164,12 +166,12 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
 
 std::vector<MeshMeasure> mesh_measures(const Mesh& m, const std::vector<const Measure*>& qs,
                                        int lattice, Reference ref) {
-  return sweep(m, qs, lattice, ref, nullptr).measures;
+  return sweep(m, qs, lattice, ref, nullptr, 0).measures;
 }
 
 MeshQuality mesh_quality(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
-                         Reference ref, const BoundsOptions& opt) {
-  return sweep(m, qs, lattice, ref, &opt);
+                         Reference ref, const BoundsOptions& opt, int threads) {
+  return sweep(m, qs, lattice, ref, &opt, threads);
 }
 
 }  // namespace homesh

@@ -47,7 +47,9 @@ struct MeshQuality {
 
 /// mesh_validity and mesh_measures in one pass over the triangles. With `qs`
 /// empty only the bounds are computed (lattice and ref are then unused).
+/// `threads` > 0 sets the number of OpenMP threads, 0 keeps OpenMP's current
+/// default (which gmsh::initialize sets to Gmsh's General.NumThreads, 1).
 MeshQuality mesh_quality(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
-                         Reference ref, const BoundsOptions& opt = {});
+                         Reference ref, const BoundsOptions& opt = {}, int threads = 0);
 
 }  // namespace homesh
