@@ -75,7 +75,7 @@ TEST_CASE("voronoi: the plate with a hole, its dual conforming, then curved to o
   std::remove(out.c_str());
 }
 
-TEST_CASE("voronoi: NACA-7526 on a 600 x 600 grid, the strip the dual misses filled",
+TEST_CASE("voronoi: NACA-7526 on a 600 x 600 grid, the strip the dual misses regrown finer",
           "[app][voronoi]") {
   const std::string out = "/tmp/homesh_voronoi_naca.msh";
   const auto r = run_homesh(geo + "naca.geo -m voronoi:grid=600 -m curve:p=3 " + out);
@@ -86,6 +86,11 @@ TEST_CASE("voronoi: NACA-7526 on a 600 x 600 grid, the strip the dual misses fil
   const int total = logged(r.output, R"(voronoi: surface \d+: (\d+) triangles)");
   const int dual = logged(r.output, R"((\d+) from the dual)");
   CHECK(dual > 0.95 * total);
+  // The 42 segments the 600-node grid misses grow again on finer windows;
+  // 16 triangles are still filled (measured), at the seams and at boundary
+  // segments other seeds encroach (docs/voronoi.md).
+  CHECK(logged(r.output, R"(the dual missed (\d+) boundary segments: regrown)") == 42);
+  CHECK(logged(r.output, R"((\d+) from the fill)") <= 16);
   CHECK(r.output.find("validity: 0 invalid of " + std::to_string(total)) != std::string::npos);
   const homesh::Mesh m = read_output(out);
   CHECK(m.num_triangles() == total);
