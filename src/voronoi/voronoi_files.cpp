@@ -67,10 +67,14 @@ MetricField read_metric_file(const std::string& path) {
                 ": expected the header 'grid NX NY XMIN YMIN XMAX YMAX'");
   const int header = lines[0].first;
   const auto h = numbers(path, header, lines[0].second, 6, "'grid NX NY XMIN YMIN XMAX YMAX'", 1);
-  const int nx = static_cast<int>(h[0]), ny = static_cast<int>(h[1]);
-  if (nx != h[0] || ny != h[1] || nx < 2 || ny < 2 || !(h[4] > h[2]) || !(h[5] > h[3]))
+  // Range first: converting a double beyond int's range is undefined behaviour.
+  constexpr double kMaxNodesPerSide = 1e7;
+  auto count_ok = [&](double v) { return v >= 2 && v <= kMaxNodesPerSide && v == std::floor(v); };
+  if (!count_ok(h[0]) || !count_ok(h[1]) || !(h[4] > h[2]) || !(h[5] > h[3]) ||
+      !std::isfinite(h[4] - h[2]) || !std::isfinite(h[5] - h[3]))
     throw Error(path + ":" + std::to_string(header) +
-                ": need integers NX, NY >= 2 and XMAX > XMIN, YMAX > YMIN");
+                ": need integers NX, NY >= 2 (at most 1e7) and finite XMAX > XMIN, YMAX > YMIN");
+  const int nx = static_cast<int>(h[0]), ny = static_cast<int>(h[1]);
   const CartesianGrid coarse = CartesianGrid::spanning({h[2], h[3]}, {h[4], h[5]}, nx, ny);
   const std::size_t count = static_cast<std::size_t>(nx) * ny;
   if (lines.size() - 1 != count)
