@@ -35,6 +35,9 @@ RefinedDual refine_dual(VoronoiProblem problem, const std::string& engine,
       for (int s = 0; s < problem.seeds.cols() && clear; ++s)
         clear = (problem.seeds.col(s) - p).norm() >= clearance;
       for (const Eigen::Vector2d& q : added) clear = clear && (q - p).norm() >= clearance;
+      for (const auto& [a, b] : refine.segments)
+        clear = clear && (p - 0.5 * (problem.seeds.col(a) + problem.seeds.col(b))).squaredNorm() >=
+                             0.25 * (problem.seeds.col(a) - problem.seeds.col(b)).squaredNorm();
       if (clear) added.push_back(p);
     }
     if (added.empty()) break;

@@ -5,6 +5,7 @@
 // their triangle in the metric), so it splits a near-degenerate vertex into
 // well-separated ones, as Delaunay refinement does (Chew 1989, Ruppert 1995).
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ struct RefineOptions {
   /// A seed is added only this many cells (ds) away from every seed, every
   /// other seed added in the round and the domain boundary.
   double clearance_cells = 2.0;
+  /// Boundary segments (seed pairs) whose diametral circle takes no added
+  /// seed (boundary_encroachment.h): such a seed would take the segment out
+  /// of the dual.
+  std::vector<std::array<int, 2>> segments;
 };
 
 struct RefinedDual {

@@ -104,7 +104,14 @@ RegrownDual regrow_windows(const VoronoiProblem& problem,
     w.seeds.resize(2, static_cast<Eigen::Index>(global.size()));
     for (std::size_t k = 0; k < global.size(); ++k) w.seeds.col(k) = out.seeds.col(global[k]);
     const int local = static_cast<int>(global.size());
-    const RefinedDual r = refine_dual(w, engine);
+    // The boundary segments inside the window protected from added seeds.
+    RefineOptions refine;
+    std::vector<int> to_local(out.seeds.cols(), -1);
+    for (int k = 0; k < local; ++k) to_local[global[k]] = k;
+    for (const auto& [a, b] : segments)
+      if (to_local[a] >= 0 && to_local[b] >= 0)
+        refine.segments.push_back({to_local[a], to_local[b]});
+    const RefinedDual r = refine_dual(w, engine, {}, refine);
     ++out.windows;
     out.window_nodes = std::max(out.window_nodes, std::max(w.grid.nx, w.grid.ny));
 

@@ -15,6 +15,7 @@
 #include "gmsh/gmsh_call.h"
 #include "gmsh/metric_view.h"
 #include "pipeline/stage_registry.h"
+#include "voronoi/boundary_encroachment.h"
 #include "voronoi/conforming_dual.h"
 #include "voronoi/curve_division.h"
 #include "voronoi/lloyd_relaxation.h"
@@ -272,14 +273,30 @@ void run(Context& ctx, const Options& opt) {
       o.iterations = lloyd;
       p.seeds = lloyd_relaxation(coarse, static_cast<int>(bseeds.cols()), engine, o);
     }
-    const double seeding_time = seconds_since(seeding);
-
-    const auto growth = Clock::now();
-    const RefinedDual r = refine_dual(p, engine);
-    const double growth_time = seconds_since(growth);
     std::vector<std::array<int, 2>> segments;
     for (const auto& [a, b] : loops.segments)
       segments.push_back({node_to_local[a], node_to_local[b]});
+    // Automatic seeds inside a boundary segment's diametral circle go: that
+    // segment could be in no dual.
+    std::vector<int> encroaching;
+    if (seeds_name == "auto") {
+      encroaching = encroaching_seeds(p.seeds, static_cast<int>(bseeds.cols()), segments);
+      std::vector<int> keep;
+      for (int k = 0, e = 0; k < p.seeds.cols(); ++k)
+        if (e < static_cast<int>(encroaching.size()) && encroaching[e] == k)
+          ++e;
+        else
+          keep.push_back(k);
+      p.seeds = Eigen::Matrix2Xd(p.seeds(Eigen::all, keep));
+    }
+    const Eigen::Index interior_count = p.seeds.cols() - bseeds.cols();
+    const double seeding_time = seconds_since(seeding);
+
+    const auto growth = Clock::now();
+    RefineOptions refine;
+    refine.segments = segments;
+    const RefinedDual r = refine_dual(p, engine, {}, refine);
+    const double growth_time = seconds_since(growth);
     // Where the dual misses the boundary, a finer grid round the spot.
     p.seeds = r.seeds;
     const RegrownDual w = regrow_windows(
@@ -295,10 +312,12 @@ void run(Context& ctx, const Options& opt) {
     ctx.log.info(
         "voronoi: surface {}: grid {} x {} (ds {:.4g}), {} boundary + {} interior seeds ({}, "
         "{:.2f} s), engine {} {:.2f} s",
-        surface.tag, p.grid.nx, p.grid.ny, p.grid.ds(), bseeds.cols(), interior.cols(),
-        seeds_name != "auto" ? seeds_name
-        : lloyd > 0 ? fmt::format("Poisson-disc in the metric, {} Lloyd iterations", lloyd)
-                    : std::string("Poisson-disc in the metric"),
+        surface.tag, p.grid.nx, p.grid.ny, p.grid.ds(), bseeds.cols(), interior_count,
+        seeds_name != "auto"
+            ? seeds_name
+            : fmt::format("Poisson-disc in the metric, {} Lloyd iterations, {} encroaching "
+                          "on a boundary segment dropped",
+                          lloyd, encroaching.size()),
         seeding_time, engine, growth_time);
     ctx.log.info(
         "voronoi: surface {}: dual {} triangles, check {} after {} refinement rounds (+{} "
