@@ -43,15 +43,6 @@ Mesh rhombus_hole() {
   return test::ring_mesh(inner, outer, 10);
 }
 
-LayerOptions options(std::vector<std::string> walls, int n, double first, double ratio) {
-  LayerOptions o;
-  o.walls = std::move(walls);
-  o.layers = n;
-  o.first = first;
-  o.ratio = ratio;
-  return o;
-}
-
 double worst_q(const Mesh& m, const std::vector<int>& tris) {
   const Eigen::VectorXd q = radius_ratios(m);
   double w = 1;
@@ -75,7 +66,7 @@ TEST_CASE("layer depths grow geometrically and sum to first (r^n - 1) / (r - 1)"
 TEST_CASE("layers around a circular hole: counts, depths, walls kept, valid", "[layers]") {
   const Mesh m = annulus();
   const int n = 3;
-  const LayerResult r = insert_layers(m, options({"wall"}, n, 0.02, 1.5));
+  const LayerResult r = insert_layers(m, test::layer_options({"wall"}, n, 0.02, 1.5));
   const Mesh& b = r.mesh;
   const int e = 32;
   CHECK(r.loops == 1);
@@ -120,7 +111,7 @@ TEST_CASE("layers around a circular hole: counts, depths, walls kept, valid", "[
 TEST_CASE("layers on several walls: concave and convex corners of a box with a hole", "[layers]") {
   const Mesh m = box_with_hole();
   const int n = 4;
-  const LayerResult r = insert_layers(m, options({"wall", "outer"}, n, 0.005, 1.3));
+  const LayerResult r = insert_layers(m, test::layer_options({"wall", "outer"}, n, 0.005, 1.3));
   CHECK(r.loops == 2);
   CHECK(r.wall_edges == 16 + 32);
   CHECK(r.mesh.num_triangles() == m.num_triangles() + 2 * n * 48);
@@ -137,7 +128,7 @@ TEST_CASE("layers on several walls: concave and convex corners of a box with a h
 TEST_CASE("layers at a re-entrant corner and five right-angle corners", "[layers]") {
   const Mesh m = l_shape();
   const int n = 3;
-  const LayerResult r = insert_layers(m, options({"wall"}, n, 0.01, 1.5));
+  const LayerResult r = insert_layers(m, test::layer_options({"wall"}, n, 0.01, 1.5));
   CHECK(r.wall_edges == 16);
   CHECK(r.mesh.num_triangles() == m.num_triangles() + 2 * n * 16);
   CHECK(r.sharpest_angle == Approx(1.5 * M_PI));
@@ -152,7 +143,7 @@ TEST_CASE("layers at a re-entrant corner and five right-angle corners", "[layers
 
 TEST_CASE("fans of normals: counts and validity at the corners of a square hole", "[layers]") {
   const Mesh m = box_with_hole();
-  LayerOptions o = options({"wall"}, 3, 0.01, 1.2);
+  LayerOptions o = test::layer_options({"wall"}, 3, 0.01, 1.2);
   o.normals.multi = true;
   o.normals.fan_angle = 270;
   for (int fan : {3, 5}) {
@@ -174,7 +165,7 @@ TEST_CASE("fans of normals: counts and validity at the corners of a square hole"
 
 TEST_CASE("multiple normals beat a single normal at a sharp corner (Eq 4.17)", "[layers]") {
   const Mesh m = rhombus_hole();
-  LayerOptions o = options({"wall"}, 4, 0.004, 1.2);
+  LayerOptions o = test::layer_options({"wall"}, 4, 0.004, 1.2);
   const LayerResult single = insert_layers(m, o);
   o.normals.multi = true;
   const LayerResult multi = insert_layers(m, o);
@@ -194,12 +185,12 @@ TEST_CASE("multiple normals beat a single normal at a sharp corner (Eq 4.17)", "
 
 TEST_CASE("layers refuse an impossible thickness with a clear message", "[layers]") {
   const Mesh m = annulus(1.5, 3);
-  CHECK_THROWS_WITH(insert_layers(m, options({"wall"}, 6, 0.1, 1)),
+  CHECK_THROWS_WITH(insert_layers(m, test::layer_options({"wall"}, 6, 0.1, 1)),
                     Catch::Contains("cannot open a room 0.6 thick for 6 layers") &&
                         Catch::Contains("use fewer or thinner layers"));
-  CHECK_THROWS_WITH(insert_layers(m, options({"hull"}, 3, 0.01, 1.2)),
+  CHECK_THROWS_WITH(insert_layers(m, test::layer_options({"hull"}, 3, 0.01, 1.2)),
                     Catch::Contains("no wall 'hull'"));
-  LayerOptions o = options({"wall"}, 3, 0.01, 1.2);
+  LayerOptions o = test::layer_options({"wall"}, 3, 0.01, 1.2);
   o.normals.multi = true;
   o.normals.fan = 2;
   CHECK_THROWS_WITH(insert_layers(m, o), Catch::Contains("odd"));
@@ -207,7 +198,7 @@ TEST_CASE("layers refuse an impossible thickness with a clear message", "[layers
 
 TEST_CASE("a quadratic mesh is layered on its corners", "[layers]") {
   const Mesh m = annulus();
-  const LayerOptions o = options({"wall"}, 2, 0.02, 1.2);
+  const LayerOptions o = test::layer_options({"wall"}, 2, 0.02, 1.2);
   const LayerResult linear = insert_layers(m, o);
   const LayerResult quadratic = insert_layers(raise_order(m, 2), o);
   CHECK(!linear.from_corners);

@@ -9,11 +9,25 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <string>
+#include <vector>
 #include <utility>
 
 #include "core/mesh.h"
+#include "layers/insert_layers.h"
 
 namespace homesh::test {
+
+/// Layer options: n layers on `walls`, first depth `first`, growth `ratio`.
+inline LayerOptions layer_options(std::vector<std::string> walls, int n, double first,
+                                  double ratio) {
+  LayerOptions o;
+  o.walls = std::move(walls);
+  o.layers = n;
+  o.first = first;
+  o.ratio = ratio;
+  return o;
+}
 
 inline void set_groups(Mesh& m) {
   m.entities = {{1, 1, {}}, {1, 2, {}}, {2, 1, {1, 2}}};

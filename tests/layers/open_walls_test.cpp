@@ -27,15 +27,6 @@ Mesh trapezoid(double a, double b) {
   });
 }
 
-LayerOptions options(std::vector<std::string> walls, int n, double first, double ratio) {
-  LayerOptions o;
-  o.walls = std::move(walls);
-  o.layers = n;
-  o.first = first;
-  o.ratio = ratio;
-  return o;
-}
-
 int lines_on(const Mesh& m, int curve) {
   return static_cast<int>(std::count(m.line_entity.begin(), m.line_entity.end(), curve));
 }
@@ -102,7 +93,7 @@ TEST_CASE("an open wall chains from one non-wall boundary line to another", "[la
 TEST_CASE("layers on the floor of a channel end on the inlet and outlet", "[layers]") {
   const Mesh m = channel();
   const int n = 4, e = 16;
-  const LayerResult r = insert_layers(m, options({"wall"}, n, 0.01, 1.3));
+  const LayerResult r = insert_layers(m, test::layer_options({"wall"}, n, 0.01, 1.3));
   const Mesh& b = r.mesh;
   CHECK(r.loops == 1);
   CHECK(r.open_walls == 1);
@@ -143,7 +134,7 @@ TEST_CASE("layers on the floor of a channel end on the inlet and outlet", "[laye
 TEST_CASE("layers on the floor and ceiling of a channel: two open walls", "[layers]") {
   const Mesh m = channel();
   const int n = 5, e = 16;
-  const LayerResult r = insert_layers(m, options({"wall", "top"}, n, 0.005, 1.4));
+  const LayerResult r = insert_layers(m, test::layer_options({"wall", "top"}, n, 0.005, 1.4));
   const Mesh& b = r.mesh;
   CHECK(r.loops == 2);
   CHECK(r.open_walls == 2);
@@ -172,7 +163,7 @@ TEST_CASE("open walls meeting their neighbours at acute and obtuse angles", "[la
   // 63.4 deg at (0, 0) and 116.6 deg at (2, 0): s = 1 / sin keeps depth d_k.
   const Mesh m = trapezoid(0.5, 0.5);
   const int n = 4, e = 8;
-  const LayerResult r = insert_layers(m, options({"wall"}, n, 0.01, 1.2));
+  const LayerResult r = insert_layers(m, test::layer_options({"wall"}, n, 0.01, 1.2));
   const Mesh& b = r.mesh;
   CHECK(b.num_triangles() == m.num_triangles() + 2 * n * e);
   CHECK(boundary_mismatch(b) == 0);
@@ -192,6 +183,6 @@ TEST_CASE("open walls meeting their neighbours at acute and obtuse angles", "[la
     }
   }
   // 161.6 deg at (2, 0): the layers cannot end along that side.
-  CHECK_THROWS_WITH(insert_layers(trapezoid(0, 3), options({"wall"}, n, 0.01, 1.2)),
+  CHECK_THROWS_WITH(insert_layers(trapezoid(0, 3), test::layer_options({"wall"}, n, 0.01, 1.2)),
                     Catch::Contains("max_end_angle"));
 }
