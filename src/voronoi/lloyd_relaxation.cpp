@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/progress.h"
 #include "voronoi/voronoi_engines.h"
 
 namespace homesh {
@@ -44,7 +45,9 @@ Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed, const std::
   const CartesianGrid& g = problem.grid;
   const double clearance = options.clearance_cells * g.ds();
   const int S = static_cast<int>(problem.seeds.cols());
+  Progress progress("iteration", options.iterations);
   for (int it = 0; it < options.iterations && fixed < S; ++it) {
+    progress.update(it + 1);
     const CrystalPartition p = grow_crystals(problem, engine);
     const Eigen::Matrix2Xd z =
         region_centroids(g, p.labels, S, problem.metric, problem.seed_metrics);

@@ -18,18 +18,22 @@ struct Run {
   std::string err;  ///< stderr
 };
 
-// The rotation benchmark of geo/README.md (99 degrees), stdout and stderr apart.
-Run rotate_plate(const std::string& env) {
+// homesh on geo/GEO with ARGS, stdout and stderr apart.
+Run run_apart(const std::string& env, const std::string& geo, const std::string& args) {
   const std::string err_file = "/tmp/homesh_progress_test.err";
-  const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/plate_hole_fig413.geo";
-  const auto r = homesh::test::run_command("(" + env + " " + HOMESH_BINARY + " " + geo +
-                                           " -m mesh -m curve:p=2 -m rotate:nu=0.45 2>" +
-                                           err_file + ")");
+  const auto r = homesh::test::run_command("(" + env + " " + HOMESH_BINARY + " " +
+                                           HOMESH_SOURCE_DIR + "/geo/" + geo + " " + args +
+                                           " 2>" + err_file + ")");
   std::ifstream in(err_file);
   std::stringstream err;
   err << in.rdbuf();
   std::remove(err_file.c_str());
   return {r.exit_code, r.output, err.str()};
+}
+
+// The rotation benchmark of geo/README.md (99 degrees).
+Run rotate_plate(const std::string& env) {
+  return run_apart(env, "plate_hole_fig413.geo", "-m mesh -m curve:p=2 -m rotate:nu=0.45");
 }
 
 }  // namespace
@@ -68,4 +72,18 @@ TEST_CASE("progress: stderr not a terminal, or HOMESH_PROGRESS=0: not a byte", "
     REQUIRE(r.out.find("rotate: theta_max = 99 deg") != std::string::npos);
     REQUIRE(r.err.empty());
   }
+}
+
+TEST_CASE("progress: crystal growth shows its phases and Lloyd's iterations", "[app]") {
+  const Run r = run_apart("HOMESH_PROGRESS=1", "plate_hole.geo", "-m voronoi:lloyd=2");
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.err.rfind("\rhomesh: stage 1/1 voronoi | phase 0/3 Lloyd's iteration on the seeds", 0) ==
+          0);
+  REQUIRE(r.err.find("| iteration 1/2") != std::string::npos);
+  // Later phases are drawn only if 0.1 s have passed (not on this small case);
+  // the line is erased at the end.
+  REQUIRE(r.err.size() >= 4);
+  REQUIRE(r.err.substr(r.err.size() - 4) == "\r\033[K");
+  REQUIRE(run_apart("HOMESH_PROGRESS=0", "plate_hole.geo", "-m voronoi:lloyd=2").err.empty());
 }

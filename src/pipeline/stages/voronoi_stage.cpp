@@ -11,6 +11,7 @@
 
 #include "core/check_mesh.h"
 #include "core/error.h"
+#include "core/progress.h"
 #include "gmsh/boundary_sampling.h"
 #include "gmsh/gmsh_call.h"
 #include "gmsh/metric_view.h"
@@ -262,7 +263,9 @@ void run(Context& ctx, const Options& opt) {
             : file_seeds(seeds_name, list, loops, p.grid, p.domain, bseeds, list_used);
     p.seeds.resize(2, bseeds.cols() + interior.cols());
     p.seeds << bseeds, interior;
+    Progress phase("phase", 3);
     if (seeds_name == "auto" && lloyd > 0) {
+      phase.update(0, "Lloyd's iteration on the seeds");
       // On a grid kLloydCoarsening times coarser: a centroid needs far fewer
       // cells per region than a dual triangle does.
       VoronoiProblem coarse = p;
@@ -292,6 +295,7 @@ void run(Context& ctx, const Options& opt) {
     const Eigen::Index interior_count = p.seeds.cols() - bseeds.cols();
     const double seeding_time = seconds_since(seeding);
 
+    phase.update(1, "growing " + std::to_string(p.seeds.cols()) + " crystals");
     const auto growth = Clock::now();
     RefineOptions refine;
     refine.segments = segments;
@@ -299,6 +303,7 @@ void run(Context& ctx, const Options& opt) {
     const double growth_time = seconds_since(growth);
     // Where the dual misses the boundary, a finer grid round the spot.
     p.seeds = r.seeds;
+    phase.update(2, "regrowing where the dual missed the boundary");
     const RegrownDual w = regrow_windows(
         p, r.result.dual.triangles, r.result.dual.vertices, segments,
         [&](const CartesianGrid& g) {
