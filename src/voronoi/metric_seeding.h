@@ -10,6 +10,12 @@
 // from every seed. The result is a well-spaced point set whose spacing
 // follows the metric: edges of its metric Delaunay triangulation have metric
 // lengths between `spacing` and about 2 `spacing`.
+//
+// Seed count: the hexagonal lattice of unit metric edges has 2 / sqrt(3) =
+// 1.155 nodes per unit metric area (integral of sqrt(det M) dA); a maximal
+// Poisson-disc sample of spacing s about 0.70 / s^2 (the random sequential
+// adsorption coverage 0.547 of discs of diameter s), so s = 0.8 gives ~94 %
+// of the lattice's count, 0.85 only ~83 % (docs/voronoi.md: measured).
 #include <Eigen/Core>
 
 #include "voronoi/cartesian_grid.h"
@@ -18,9 +24,9 @@
 namespace homesh {
 
 struct SeedingOptions {
-  double spacing = 0.85;      ///< smallest metric distance between seeds
+  double spacing = 0.8;       ///< smallest metric distance between seeds
   double annulus = 0.3;       ///< candidates up to spacing (1 + annulus) away
-  double boundary_gap = 0.6;  ///< smallest metric distance to the boundary
+  double boundary_gap = 0.7;  ///< smallest metric distance to the boundary
   int tries = 24;             ///< candidates per seed before it retires
   unsigned random_seed = 1;   ///< std::mt19937, so the seeds are reproducible
 };

@@ -22,6 +22,7 @@
 #include "voronoi/lloyd_relaxation.h"
 #include "voronoi/loop_distance.h"
 #include "voronoi/metric_seeding.h"
+#include "voronoi/metric_smoothing.h"
 #include "voronoi/refine_dual.h"
 #include "voronoi/size_metric.h"
 #include "voronoi/voronoi_engines.h"
@@ -178,6 +179,7 @@ void run(Context& ctx, const Options& opt) {
   const std::string engine = opt.get_string("engine");
   const int grid_option = opt.get_int("grid", 0, 20000);
   const int lloyd = opt.get_int("lloyd", 0, 100);
+  const int smooth = opt.get_int("smooth", 0, 100);
   if (grid_option > 0 && grid_option < 32)
     throw Error("stage 'voronoi': option grid must be 0 (automatic) or at least 32");
   try {
@@ -399,6 +401,12 @@ void run(Context& ctx, const Options& opt) {
     }
   m.entities = reference.entities;
   m.physicals = reference.physicals;
+  if (smooth > 0) {
+    std::vector<char> free_node(m.node_class.size());
+    for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
+    const int moves = smooth_free_nodes(m.x, m.tri, free_node, metric, smooth);
+    ctx.log.info("voronoi: {} smoothing sweeps of the interior nodes, {} moves", smooth, moves);
+  }
   check_mesh(m, "stage 'voronoi'");
   ctx.mesh = m;
   ctx.fields.clear();
@@ -423,9 +431,14 @@ Stage voronoi_stage() {
            {"seeds", "auto",
             "auto (Poisson-disc in the metric) | FILE (interior seeds, one 'x y' per line; the "
             "boundary seeds are placed from the metric)"},
-           {"lloyd", "3",
+           {"lloyd", "5",
             "Lloyd iterations on the auto seeds: each interior seed moves to the metric "
             "centroid of its region (0: none)"},
+           {"smooth", "3",
+            "sweeps of smart smoothing of the interior nodes after the dual (Laplacian or "
+            "ideal-apex position, compass search where a triangle stays below 0.8; a move is kept "
+            "only if the worst triangle round the node gets no worse in the metric; the "
+            "connectivity stays the dual's; 0: none)"},
            {"engine", "fast_marching", "fast_marching | level_set"},
            {"grid", "0",
             "grid nodes along the longer side (0: the smallest size over 6 cells, 200 to 1500)"}},
