@@ -99,3 +99,20 @@ def test_gen_reference_lists_every_stage_and_measure():
     ids = re.findall(r"^\s*(Q\d+) ", measures, re.M)
     rows = re.findall(r"^\| (Q\d+) \|", out, re.M)
     assert rows == ids and "Q17" in rows
+
+
+def test_voronoi_mesh_follows_the_users_metric_view(tmp_path):
+    msh = tmp_path / "voronoi.msh"
+    log = run("voronoi_metric.py", "--msh", str(msh))
+    invalid, triangles = validity(log)
+    assert invalid == 0 and triangles > 300
+    # Every triangle comes from the dual of the crystals grown under the view's metric.
+    m = re.search(r"(\d+) triangles, (\d+) from the dual, 0 from the fill", log)
+    assert m and m.group(1) == m.group(2)
+    # Edges are of unit length in the user's metric, at the anisotropic line and away from
+    # it (measured 1.037 and 1.013), and the short ones cross the line (measured 0.904).
+    m = re.search(r"median metric edge length: (\S+) at the line, (\S+) away", log)
+    assert 0.85 < float(m.group(1)) < 1.2 and 0.85 < float(m.group(2)) < 1.2
+    m = re.search(r"mean \|cos\| to the line's normal (\S+)", log)
+    assert float(m.group(1)) > 0.8
+    assert msh.exists() and (tmp_path / "voronoi.msh.opt").exists()
