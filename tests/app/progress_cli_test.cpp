@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "../support/run_command.h"
 
 namespace {
@@ -20,7 +22,10 @@ struct Run {
 
 // homesh on geo/GEO with ARGS, stdout and stderr apart.
 Run run_apart(const std::string& env, const std::string& geo, const std::string& args) {
-  const std::string err_file = "/tmp/homesh_progress_test.err";
+  // One file per run: ctest runs the test cases of this file in parallel.
+  static int runs = 0;
+  const std::string err_file = "/tmp/homesh_progress_test." + std::to_string(getpid()) + "." +
+                               std::to_string(++runs) + ".err";
   const auto r = homesh::test::run_command("(" + env + " " + HOMESH_BINARY + " " +
                                            HOMESH_SOURCE_DIR + "/geo/" + geo + " " + args +
                                            " 2>" + err_file + ")");
