@@ -1,8 +1,10 @@
 #include "curving/deform_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "fem/solve_elasticity.h"
 #include "quality/mesh_validity.h"
 
@@ -108,8 +110,11 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
   const double full_step = 1.0 / opt.increments;
   double step = full_step;
   int halvings = 0;
+  Progress progress("boundary motion", 0);
   while (r.reached < 1.0 - 1e-12) {
     const double next = std::min(1.0, r.reached + step);
+    progress.update(r.solves, std::to_string(std::lround(100 * r.reached)) + " % done, solve " +
+                                  std::to_string(r.solves + 1));
     const DirichletBC bc = boundary_condition(next);
     const ElasticitySolution s =
         halvings == 0

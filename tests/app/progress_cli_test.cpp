@@ -48,8 +48,15 @@ TEST_CASE("progress: HOMESH_PROGRESS=1 draws the rotation's steps under its stag
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.out.find("rotate: theta_max = 99 deg") != std::string::npos);
+  // The curve stage's increments come first, erased before it reports.
+  const std::regex curve(
+      R"(\rhomesh: stage 2/3 curve \| boundary motion \d+ % done, solve \d+\x1b\[K)");
+  REQUIRE(r.err.rfind("\rhomesh: stage 2/3 curve | boundary motion 0 % done, solve 1", 0) == 0);
+  const auto rotating = r.err.find("\rhomesh: stage 3/3 rotate");
+  REQUIRE(rotating != std::string::npos);
+  REQUIRE(std::regex_replace(r.err.substr(0, rotating), curve, "") == "\r\033[K");
   // The first step is drawn at once; later ones at most every 0.1 s, in order, up to 99.
-  REQUIRE(r.err.rfind("\rhomesh: stage 3/3 rotate | step 1/360 1 deg\033[K", 0) == 0);
+  REQUIRE(r.err.find("\rhomesh: stage 3/3 rotate | step 1/360 1 deg\033[K") == rotating);
   const std::regex step(R"(\rhomesh: stage 3/3 rotate \| step (\d+)/360 (\d+) deg\x1b\[K)");
   int draws = 0, last = 0;
   for (auto it = std::sregex_iterator(r.err.begin(), r.err.end(), step);
@@ -62,7 +69,7 @@ TEST_CASE("progress: HOMESH_PROGRESS=1 draws the rotation's steps under its stag
   }
   REQUIRE(draws >= 1);
   // The line is erased before the stage reports, so nothing else is on stderr.
-  const std::string erased = std::regex_replace(r.err, step, "");
+  const std::string erased = std::regex_replace(r.err.substr(rotating), step, "");
   REQUIRE(erased == "\r\033[K");
   // No progress line on stdout.
   REQUIRE(r.out.find("step 1/360") == std::string::npos);
@@ -91,4 +98,13 @@ TEST_CASE("progress: crystal growth shows its phases and Lloyd's iterations", "[
   REQUIRE(r.err.size() >= 4);
   REQUIRE(r.err.substr(r.err.size() - 4) == "\r\033[K");
   REQUIRE(run_apart("HOMESH_PROGRESS=0", "plate_hole.geo", "-m voronoi:lloyd=2").err.empty());
+}
+
+TEST_CASE("progress: curving shows the share of the boundary motion reached", "[app]") {
+  const Run r = run_apart("HOMESH_PROGRESS=1", "plate_hole.geo", "-m mesh -m curve:p=3:increments=4");
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.err.rfind("\rhomesh: stage 2/2 curve | boundary motion 0 % done, solve 1\033[K", 0) == 0);
+  REQUIRE(r.err.size() >= 4);
+  REQUIRE(r.err.substr(r.err.size() - 4) == "\r\033[K");
 }
