@@ -35,6 +35,7 @@ import time
 
 import gmsh
 import homesh
+from gmsh_referee import referee
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -142,21 +143,6 @@ def homesh_view_min():
     raise RuntimeError("the layers stage left no radius-ratio view")
 
 
-def referee():
-    """(invalid, worst) of Gmsh's AnalyseMeshQuality per-element minJ/maxJ on the model."""
-    for name, value in [("JacobianDeterminant", 1), ("IGEMeasure", 0), ("ICNMeasure", 0),
-                        ("CreateView", 1), ("Recompute", 1), ("DimensionOfElements", 2)]:
-        gmsh.plugin.setNumber("AnalyseMeshQuality", name, value)
-    before = set(gmsh.view.getTags())
-    gmsh.plugin.run("AnalyseMeshQuality")
-    for tag in set(gmsh.view.getTags()) - before:
-        if gmsh.option.getString(f"View[{gmsh.view.getIndex(tag)}].Name").startswith("minJ/maxJ"):
-            _, _, data, _, _ = gmsh.view.getModelData(tag, 0)
-            values = np.array([d[0] for d in data])
-            return int((values <= 0).sum()), float(values.min())
-    raise RuntimeError("AnalyseMeshQuality made no minJ/maxJ view")
-
-
 def curve(p, curver):
     """Curve the model to order p; returns (seconds, error message or '')."""
     t = time.perf_counter()
@@ -197,7 +183,7 @@ def run(outdir):
                     secs, error = curve(p, curver)
                     curved = all(gmsh.model.mesh.getElementProperties(t)[2] == p
                                  for t in gmsh.model.mesh.getElementTypes(2))
-                    invalid, worst = referee() if curved else ("", "")
+                    invalid, worst, _ = referee() if curved else ("", "", "")
                     gmsh.finalize()
                     rows.append(dict(base, p=p, curving=curver, invalid=invalid,
                                      worst_minJ_maxJ=worst, curve_seconds=secs, error=error))
