@@ -98,7 +98,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--all", action="store_true", help="the thesis' 8 cases x 7 nu")
     parser.add_argument("--solver", choices=["ldlt", "cg"], default="ldlt",
-                        help="ldlt (homesh's default) or Jacobi CG (the thesis' kind)")
+                        help="ldlt (direct) or Jacobi CG (the thesis' kind)")
     parser.add_argument("--geo", default=os.path.join(ROOT, "geo", "plate_hole_fig413.geo"))
     parser.add_argument("--reference", default=os.path.join(
         ROOT, "..", "shared", "reference", "tables_4_1_to_4_8_rotation.csv"))
