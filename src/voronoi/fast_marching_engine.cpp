@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "voronoi/stencil_field.h"
+#include "voronoi/time_heap.h"
 
 namespace homesh {
 namespace {
@@ -37,91 +38,68 @@ struct Entry {
   std::uint8_t hop = 255;
 };
 
-// A 4-ary min-heap of (time, entry): half the depth of a binary heap, and
-// the four children of a node share a cache line.
-class TimeHeap {
- public:
-  using Item = std::pair<double, int>;
-  bool empty() const { return items_.empty(); }
-  const Item& top() const { return items_.front(); }
-  void push(const Item& item) {
-    std::size_t k = items_.size();
-    items_.push_back(item);
-    while (k > 0 && item.first < items_[(k - 1) / 4].first) {
-      items_[k] = items_[(k - 1) / 4];
-      k = (k - 1) / 4;
-    }
-    items_[k] = item;
+// The seeds in the Morton (Z) order of their grid cells.
+std::vector<int> morton_order(const CartesianGrid& g, const Eigen::Matrix2Xd& seeds) {
+  const auto spread_bits = [](std::uint64_t v) {
+    std::uint64_t out = 0;
+    for (int b = 0; b < 32; ++b) out |= ((v >> b) & 1u) << (2 * b);
+    return out;
+  };
+  const int S = static_cast<int>(seeds.cols());
+  std::vector<std::pair<std::uint64_t, int>> key(S);
+  for (int s = 0; s < S; ++s) {
+    const Eigen::Vector2d rel = seeds.col(s) - g.origin;
+    const auto i = static_cast<std::uint64_t>(std::max(0.0, rel.x() / g.dx));
+    const auto j = static_cast<std::uint64_t>(std::max(0.0, rel.y() / g.dy));
+    key[s] = {spread_bits(i) | (spread_bits(j) << 1), s};
   }
-  void pop() {
-    const Item last = items_.back();
-    items_.pop_back();
-    if (items_.empty()) return;
-    std::size_t k = 0;
-    for (;;) {
-      const std::size_t first = 4 * k + 1;
-      if (first >= items_.size()) break;
-      std::size_t best = first;
-      const std::size_t end = std::min(first + 4, items_.size());
-      for (std::size_t c = first + 1; c < end; ++c)
-        if (items_[c].first < items_[best].first) best = c;
-      if (!(items_[best].first < last.first)) break;
-      items_[k] = items_[best];
-      k = best;
-    }
-    items_[k] = last;
-  }
+  std::sort(key.begin(), key.end());
+  std::vector<int> order(S);
+  for (int s = 0; s < S; ++s) order[s] = key[s].second;
+  return order;
+}
 
- private:
-  std::vector<Item> items_;
-};
-
-// The pending (time, entry) items in buckets of `width` in time, the current
-// bucket (and any item pushed below it) in a TimeHeap: items leave in exact
-// time order, as from one heap, but the heap holds one bucket's worth rather
-// than every front at once (with many seeds, megabytes out of cache).
-class BucketQueue {
- public:
-  using Item = TimeHeap::Item;
-  explicit BucketQueue(double width) : width_(width) {}
-  // Whether no item is left; refills the heap from the next bucket first.
-  bool empty() {
-    while (heap_.empty() && current_ + 1 < buckets_.size()) {
-      std::vector<Item> next;
-      next.swap(buckets_[++current_]);
-      for (const Item& item : next) heap_.push(item);
-    }
-    return heap_.empty();
-  }
-  const Item& top() const { return heap_.top(); }
-  void pop() { heap_.pop(); }
-  void push(const Item& item) {
-    const std::size_t k = static_cast<std::size_t>(item.first / width_);
-    if (k <= current_) return heap_.push(item);
-    if (k >= buckets_.size()) buckets_.resize(k + 1);
-    buckets_[k].push_back(item);
-  }
-
- private:
-  double width_;
-  std::size_t current_ = 0;
-  std::vector<std::vector<Item>> buckets_{1};
-  TimeHeap heap_;
-};
-
+// The sweep. Each crystal's entries are accepted in increasing time from its
+// own heap, and a crystal's times depend on its own entries only; crystals
+// meet only through the winner of each node, the accepted entry of least
+// time so far. So the crystals need not take turns entry by entry: the sweep
+// goes through time in slabs one cell's crossing time wide and, within a
+// slab, grows the crystals one after the other, in the Morton order of their
+// seeds (neighbouring crystals in turn: their fronts share cache lines).
+// Where two crystals reach a node in the same slab, the one grown first may
+// win it for a while and spread from it before the other takes it with a
+// smaller time: at most one slab of extra growth past an interface, which
+// only adds entries of that crystal. Along the geodesic from its seed to a
+// node of its region, a crystal holds the least time at every node, so it wins
+// each at acceptance and reaches the node, as in one heap of all crystals:
+// the labels are those of exact time order (ties go to the lower label).
+//
+// Inside the sweep the crystals are numbered in that order (crystal c is
+// seed original[c]): their heaps and the entries of their seed blocks then
+// lie in memory in the order they are visited.
 class Sweep {
  public:
-  Sweep(const StencilField& field, const Eigen::Matrix2Xd& seeds, std::vector<Eigen::Matrix2d> M)
+  Sweep(const StencilField& field, const Eigen::Matrix2Xd& seeds,
+        const std::vector<Eigen::Matrix2d>& M, std::vector<int> original)
       : field_(field),
-        seeds_(seeds),
-        seed_metric_(std::move(M)),
+        original_(std::move(original)),
+        seeds_(2, seeds.cols()),
+        seed_metric_(M.size()),
         nodes_(field.grid().node_count()),
-        heap_(bucket_width(field.grid(), seed_metric_)) {
+        queue_(seeds.cols()),
+        slab_(slab_width(field.grid(), M)) {
+    for (int c = 0; c < seeds.cols(); ++c) {
+      seeds_.col(c) = seeds.col(original_[c]);
+      seed_metric_[c] = M[original_[c]];
+    }
     entries_.reserve(field.grid().node_count() + field.grid().node_count() / 4);
   }
 
   // Exact times |x - p_s|_{M_s} on the nodes of the metric ball of smallest
-  // semi-axis `cells` cells round seed s that see the seed through the domain.
+  // semi-axis `cells` cells round the seed of crystal s that see the seed
+  // through the domain, but for those an earlier block already reaches in
+  // less time (with dense seeds the balls overlap: the crystal would only lose
+  // them). Returns the number of nodes of the ball that see the seed.
   int seed_block(int s, double cells) {
     const CartesianGrid& g = field_.grid();
     const Eigen::Vector2d p = seeds_.col(s);
@@ -142,34 +120,41 @@ class Sweep {
         const Eigen::Vector2d v = g.point(i, j) - p;
         const double t = std::sqrt(v.dot(M * v));
         if (t > R || !field_.inside(x) || !field_.visible(p, g.point(i, j))) continue;
+        ++placed;
+        if (earlier_block(x, t)) continue;
         const int e = find_or_add(x, s);
         entries_[e].hop = 0;
         lower(e, t, -1 - s, 0.0);
-        ++placed;
       }
     return placed;
   }
 
-  // Accepts entries in increasing time up to `stop`; false if stopped early.
+  // Accepts every crystal's entries in increasing time up to `stop`, slab by
+  // slab; false if stopped early (at `stop`, or after max_steps entries).
   bool run(double stop, long max_steps) {
-    while (!heap_.empty()) {
-      const auto [t, e] = heap_.top();
-      if (t > stop || (max_steps > 0 && steps_ >= max_steps)) return false;
-      heap_.pop();
-      // The next entry is most likely the new top: fetch it while this one
-      // spreads (with many seeds consecutive entries lie far apart in memory).
-      if (!heap_.empty()) __builtin_prefetch(&entries_[heap_.top().second]);
-
-      Entry& en = entries_[e];
-      if (en.accepted || en.time != t) continue;
-      en.accepted = 1;
-      ++steps_;
-      if (nodes_[en.node].winner < 0) {
-        nodes_[en.node].winner = e;
-        nodes_[en.node].winner_label = en.label;
-        en.hop = 0;
+    std::vector<int> active;
+    double first = kInf;
+    for (int c = 0; c < static_cast<int>(queue_.size()); ++c)
+      if (!queue_[c].empty()) {
+        active.push_back(c);
+        first = std::min(first, queue_[c].top().first);
       }
-      if (en.hop < kOwnTimeBand) spread(e);
+    while (!active.empty()) {
+      if (first > stop) return false;
+      const double end = std::min(first + slab_, std::nextafter(stop, kInf));
+      first = kInf;
+      std::size_t kept = 0;
+      for (const int c : active) {
+        TimeHeap& heap = queue_[c];
+        if (!grow(heap, end, max_steps)) return false;
+        if (heap.empty()) {
+          heap.release();
+          continue;
+        }
+        first = std::min(first, heap.top().first);
+        active[kept++] = c;
+      }
+      active.resize(kept);
     }
     return true;
   }
@@ -180,50 +165,88 @@ class Sweep {
   // crystal taking it.
   void fill_unreached() {
     const CartesianGrid& g = field_.grid();
+    TimeHeap heap;
     const auto offer = [&](int x) {
       const int i = x % g.nx, j = x / g.nx;
+      const NodeState& from = nodes_[x];
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int a = i + di, b = j + dj;
           if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= g.nx || b >= g.ny) continue;
           const int z = g.index(a, b);
-          if (nodes_[z].winner >= 0 || !field_.inside(z)) continue;
-          const Entry& from = entries_[nodes_[x].winner];
+          if (nodes_[z].winner_label >= 0 || !field_.inside(z)) continue;
           const Eigen::Vector2d v(di * g.dx, dj * g.dy);
-          const double t = from.time + std::sqrt(v.dot(field_.node_metric(from.label, z) * v));
-          lower(find_or_add(z, from.label), t, z, t);
+          const double t =
+              from.winner_time + std::sqrt(v.dot(field_.node_metric(original_[from.winner_label], z) * v));
+          const int e = find_or_add(z, from.winner_label);
+          if (assign(e, t, z, t)) heap.push({t, e});
         }
     };
+    bool missing = false;
+    for (int x = 0; x < g.node_count() && !missing; ++x)
+      missing = nodes_[x].winner_label < 0 && field_.inside(x);
+    if (!missing) return;
     for (int x = 0; x < g.node_count(); ++x)
-      if (nodes_[x].winner >= 0) offer(x);
-    while (!heap_.empty()) {
-      const auto [t, e] = heap_.top();
-      heap_.pop();
+      if (nodes_[x].winner_label >= 0) offer(x);
+    while (!heap.empty()) {
+      const auto [t, e] = heap.top();
+      heap.pop();
       Entry& en = entries_[e];
-      if (en.accepted || en.time != t || nodes_[en.node].winner >= 0) continue;
+      if (en.accepted || en.time != t || nodes_[en.node].winner_label >= 0) continue;
       en.accepted = 1;
       en.hop = 0;
-      nodes_[en.node].winner = e;
       nodes_[en.node].winner_label = en.label;
+      nodes_[en.node].winner_time = t;
       offer(en.node);
     }
   }
 
   long steps() const { return steps_; }
 
-  // Buckets of the time a front takes to cross a cell at the seeds' largest
-  // speed: about one layer of each front per bucket.
-  static double bucket_width(const CartesianGrid& g, const std::vector<Eigen::Matrix2d>& M) {
+  // Slabs of the time a front takes to cross a cell at the seeds' largest
+  // speed: about one layer of each front per slab.
+  static double slab_width(const CartesianGrid& g, const std::vector<Eigen::Matrix2d>& M) {
     double fastest = 0.0;
     for (const Eigen::Matrix2d& m : M) fastest = std::max(fastest, metric_max_speed(m));
     return g.ds() / fastest;
   }
 
-  // The winning entry at a node, or -1.
-  int winner(int node) const { return nodes_[node].winner; }
-  const Entry& entry(int e) const { return entries_[e]; }
+  /// The seed whose crystal holds node x (-1: none) and its time there.
+  int label(int x) const {
+    const int c = nodes_[x].winner_label;
+    return c < 0 ? -1 : original_[c];
+  }
+  double time(int x) const { return nodes_[x].winner_time; }
 
  private:
+  // Accepts the entries of one crystal's heap below time `end`; false once
+  // max_steps entries are accepted.
+  bool grow(TimeHeap& heap, double end, long max_steps) {
+    while (!heap.empty() && heap.top().first < end) {
+      const auto [t, e] = heap.top();
+      heap.pop();
+      Entry& en = entries_[e];
+      if (en.accepted || en.time != t) continue;
+      if (max_steps > 0 && steps_ >= max_steps) return false;
+      en.accepted = 1;
+      ++steps_;
+      NodeState& node = nodes_[en.node];
+      if (node.winner_label < 0 || t < node.winner_time ||
+          (t == node.winner_time && en.label < node.winner_label)) {
+        node.winner_label = en.label;
+        node.winner_time = t;
+        en.hop = 0;
+      }
+      if (en.hop < kOwnTimeBand) spread(e);
+    }
+    return true;
+  }
+  // Whether a seed block already gives node x a time below t.
+  bool earlier_block(int x, double t) const {
+    for (int e = nodes_[x].head; e >= 0; e = entries_[e].next)
+      if (entries_[e].time < t) return true;
+    return false;
+  }
   int find(int node, int label) const {
     for (int e = nodes_[node].head; e >= 0; e = entries_[e].next)
       if (entries_[e].label == label) return e;
@@ -239,13 +262,17 @@ class Sweep {
     nodes_[node].head = static_cast<int>(entries_.size()) - 1;
     return nodes_[node].head;
   }
-  void lower(int e, double t, int source, double source_time) {
+  // Lowers entry e's time to t (measured from `source`); whether it did.
+  bool assign(int e, double t, int source, double source_time) {
     Entry& en = entries_[e];
-    if (t >= en.time) return;
+    if (t >= en.time) return false;
     en.time = t;
     en.source = source;
     en.source_time = source_time;
-    heap_.push({t, e});
+    return true;
+  }
+  void lower(int e, double t, int source, double source_time) {
+    if (assign(e, t, source, source_time)) queue_[entries_[e].label].push({t, e});
   }
   Eigen::Vector2d point(int source) const {
     const CartesianGrid& g = field_.grid();
@@ -259,12 +286,12 @@ class Sweep {
   double from_source(int s, int x, const Entry& from) const {
     const CartesianGrid& g = field_.grid();
     const Eigen::Vector2d v = g.point(x % g.nx, x / g.nx) - point(from.source);
-    const Eigen::Matrix2d& Mx = field_.node_metric(s, x);
+    const Eigen::Matrix2d& Mx = field_.node_metric(original_[s], x);
     double length2 = v.dot(Mx * v);
     if (field_.varying()) {
       if (v.norm() > kTrustCells * g.ds()) return kInf;
       const Eigen::Matrix2d& Mo =
-          from.source < 0 ? seed_metric_[s] : field_.node_metric(s, from.source);
+          from.source < 0 ? seed_metric_[s] : field_.node_metric(original_[s], from.source);
       length2 = 0.5 * (length2 + v.dot(Mo * v));
     }
     if (!field_.visible(point(from.source), g.point(x % g.nx, x / g.nx))) return kInf;
@@ -289,14 +316,14 @@ class Sweep {
     const int s = entries_[e].label, y = entries_[e].node;
     const double a = entries_[e].time;
     const int hop = entries_[e].hop + 1;
-    field_.for_each_reverse(s, y, [&](int x, int k) {
+    field_.for_each_reverse(original_[s], y, [&](int x, int k) {
       if (!field_.inside(x)) return;
       const int w = nodes_[x].winner_label;
       if (w >= 0 && (w == s || hop > kOwnTimeBand)) return;
-      if (field_.has_domain() && !field_.passable(x, y, field_.euclid(s, x, k))) return;
+      if (field_.has_domain() && !field_.passable(x, y, field_.euclid(original_[s], x, k))) return;
       const int target = find_or_add(x, s);
       if (entries_[target].accepted) return;
-      const StencilField::Local l = field_.local(s, x, k);
+      const StencilField::Local l = field_.local(original_[s], x, k);
       double t = a + l.length;
       const int before = upwind(s, x, l.prev, l.euclid_prev);
       if (before >= 0) t = std::min(t, hopf_lax(l.before, entries_[before].time, a));
@@ -321,18 +348,20 @@ class Sweep {
   }
 
   const StencilField& field_;
-  const Eigen::Matrix2Xd& seeds_;
+  std::vector<int> original_;
+  Eigen::Matrix2Xd seeds_;  ///< in the sweep's order, as the next two
   std::vector<Eigen::Matrix2d> seed_metric_;
   std::vector<Entry> entries_;
   // Per node, side by side (one cache line per visit): the head of its entry
-  // list, the winning entry and its label (-1: none yet).
+  // list, the crystal of least accepted time so far (-1: none yet) and that time.
   struct NodeState {
     int head = -1;
-    int winner = -1;
     int winner_label = -1;
+    double winner_time = kInf;
   };
   std::vector<NodeState> nodes_;
-  BucketQueue heap_;
+  std::vector<TimeHeap> queue_;  ///< per crystal, its pending entries
+  double slab_;
   long steps_ = 0;
 };
 
@@ -357,11 +386,12 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
       throw Error("voronoi: seed " + std::to_string(s) + " lies outside the domain");
     M[s] = field.metric(s, p);
   }
-  Sweep sweep(field, problem.seeds, M);
+  const std::vector<int> order = morton_order(g, problem.seeds);
+  Sweep sweep(field, problem.seeds, M, order);
   const double cells = options.seed_radius > 0.0 ? options.seed_radius / g.ds() : kSeedBlockCells;
-  for (int s = 0; s < S; ++s)
-    if (sweep.seed_block(s, cells) == 0)
-      throw Error("voronoi: seed " + std::to_string(s) + " sees no grid node of the domain");
+  for (int c = 0; c < S; ++c)
+    if (sweep.seed_block(c, cells) == 0)
+      throw Error("voronoi: seed " + std::to_string(order[c]) + " sees no grid node of the domain");
   const double stop = options.stop_time > 0.0 ? options.stop_time : kInf;
   CrystalPartition out;
   out.settled = sweep.run(stop, options.max_steps);
@@ -369,13 +399,12 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
   out.steps = static_cast<int>(std::min<long>(sweep.steps(), std::numeric_limits<int>::max()));
   out.labels = Eigen::VectorXi::Constant(g.node_count(), -1);
   for (int x = 0; x < g.node_count(); ++x) {
-    const int w = sweep.winner(x);
-    if (w < 0) {
+    if (sweep.label(x) < 0) {
       out.uncovered += field.inside(x);
       continue;
     }
-    out.labels(x) = sweep.entry(w).label;
-    out.time = std::max(out.time, sweep.entry(w).time);
+    out.labels(x) = sweep.label(x);
+    out.time = std::max(out.time, sweep.time(x));
   }
   std::vector<std::array<int, 2>> collisions;
   std::vector<char> contact(S, 0);
@@ -392,7 +421,8 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
           continue;
         }
         const int b = out.labels(n);
-        if (b > a) collisions.push_back({a, b});
+        if (b > a && (collisions.empty() || collisions.back() != std::array<int, 2>{a, b}))
+          collisions.push_back({a, b});
       }
     }
   std::sort(collisions.begin(), collisions.end());
