@@ -1,11 +1,15 @@
 #include "curving/analogy_formulation.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 #include "curving/element_distortion.h"
 #include "fem/element_tabulation.h"
 #include "quality/ideal_jacobian.h"
+#include "quality/shape_measures.h"
 
 namespace homesh {
 namespace {
@@ -83,26 +87,39 @@ Eigen::Matrix2d scaled_metric(const Eigen::Matrix2d& F) {
   return det > 0 ? Eigen::Matrix2d(M / std::sqrt(det)) : Eigen::Matrix2d::Identity();
 }
 
+// The tabulation at the rule the assembly uses (coefficients are read at its
+// points by QuadraturePoint::index).
+ElementTabulation assembly_tabulation(const Mesh& m, const FormulationParams& p) {
+  return tabulate_element(m.order, stiffness_quadrature_degree(m.order, p.assembly.quadrature_margin));
+}
+
+// The reference->physical Jacobian J of every element of m at every point of
+// tab's rule, element-major: entry e * #points + k.
+std::vector<Eigen::Matrix2d> quadrature_jacobians(const Mesh& m, const ElementTabulation& tab) {
+  const Eigen::Index nq = tab.rule.points.cols();
+  std::vector<Eigen::Matrix2d> J(static_cast<std::size_t>(m.num_triangles() * nq));
+  for (int e = 0; e < m.num_triangles(); ++e) {
+    const Eigen::Matrix2Xd X = m.triangle_nodes(e);
+    for (Eigen::Index k = 0; k < nq; ++k) {
+      J[e * nq + k].col(0) = X * tab.dNdu.col(k);
+      J[e * nq + k].col(1) = X * tab.dNdv.col(k);
+    }
+  }
+  return J;
+}
+
 ElasticityCoefficients metric(const Mesh& m, const Mesh& initial, const FormulationParams& p,
                               bool ideal) {
   ElasticityCoefficients c = base(p);
-  const ElementTabulation tab =
-      tabulate_element(m.order, stiffness_quadrature_degree(m.order, p.assembly.quadrature_margin));
+  const ElementTabulation tab = assembly_tabulation(m, p);
   const Eigen::Index nq = tab.rule.points.cols();
-  std::vector<Eigen::Matrix2d> table(static_cast<std::size_t>(m.num_triangles() * nq));
+  const std::vector<Eigen::Matrix2d> J = quadrature_jacobians(m, tab),
+                                     J0 = quadrature_jacobians(initial, tab);
   const Eigen::Matrix2d map = ideal ? Eigen::Matrix2d(reference_to_ideal_jacobian().inverse())
                                     : Eigen::Matrix2d::Identity();
-  auto jacobian_at = [&](const Eigen::Matrix2Xd& X, Eigen::Index k) {
-    Eigen::Matrix2d J;
-    J.col(0) = X * tab.dNdu.col(k);
-    J.col(1) = X * tab.dNdv.col(k);
-    return Eigen::Matrix2d(J * map);
-  };
-  for (int e = 0; e < m.num_triangles(); ++e) {
-    const Eigen::Matrix2Xd X = m.triangle_nodes(e), X0 = initial.triangle_nodes(e);
-    for (Eigen::Index k = 0; k < nq; ++k)
-      table[e * nq + k] = scaled_metric(jacobian_at(X, k)) - scaled_metric(jacobian_at(X0, k));
-  }
+  std::vector<Eigen::Matrix2d> table(J.size());
+  for (std::size_t i = 0; i < J.size(); ++i)
+    table[i] = scaled_metric(J[i] * map) - scaled_metric(J0[i] * map);
   c.anisotropic_stress = [table = std::move(table), nq, s = -p.heat](const QuadraturePoint& q) {
     return Eigen::Matrix2d(s * table[q.element * nq + q.index]);
   };
@@ -140,6 +157,51 @@ ElasticityCoefficients stiff_shape(const Mesh& m, const Mesh& initial, const For
   return c;
 }
 
+// homesh extension (stiff_shear): the shear modulus alone stiffened, point by
+// point,
+//   mu = mu0 (R_e q_F)^-power,  lambda = lambda0,
+// at every quadrature point of the assembly, with (lambda0, mu0) those of
+// E = 1 and nu (plane strain), R_e = min Q17 / max Q17 of the element (case 8)
+// and q_F = 2 det F / |F|_F^2, the condition-number quality (Q11, Eq 3.44;
+// Knupp, IJNME 48, 2000) of the deformation gradient F = J J0^-1 from the
+// initial mesh to the current one at that point: 1 while the deformation
+// there is a rotation and uniform scaling, falling as it shears. Two
+// distortions, two factors: R_e sees det J vary inside a curved element, q_F
+// the shear a turning wall puts into its neighbours, which R_e does not see.
+// The stiffening by a power of a local deformation measure is the
+// Jacobian-based stiffening of Stein, Tezduyar and Benney (J. Appl. Mech. 70,
+// 2003), there per element and applied to E. Here it acts on mu only, since
+// the measures are of shape: a distorted point resists further shape change
+// but keeps lambda, the resistance to area change, instead of locking as E
+// and lambda grow together (its effective Poisson ratio falls towards 0).
+// R_e q_F is capped below at 1e-4. Every factor is 1 on a rigid motion of a
+// straight-sided initial mesh, so then E = 1 and nu as given.
+ElasticityCoefficients stiff_shear(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
+  ElasticityCoefficients c = base(p);
+  const ElementTabulation tab = assembly_tabulation(m, p);
+  const Eigen::Index nq = tab.rule.points.cols();
+  const std::vector<Eigen::Matrix2d> J = quadrature_jacobians(m, tab),
+                                     J0 = quadrature_jacobians(initial, tab);
+  const Eigen::VectorXd ratio = element_distortion(m).q17_ratio;
+  const Lame lame0 = lame_plane_strain(1.0, p.poisson);
+  const double lambda = lame0.lambda;
+  std::vector<double> young(J.size()), poisson(J.size());
+  for (std::size_t i = 0; i < J.size(); ++i) {
+    const Eigen::Matrix2d F = J[i] * J0[i].inverse();
+    const double q = F.determinant() > 0 ? condition_number_quality(F) : 0.0;
+    const double mu = lame0.mu * std::pow(std::max(ratio(Eigen::Index(i) / nq) * q, 1e-4), -p.power);
+    young[i] = mu * (3 * lambda + 2 * mu) / (lambda + mu);
+    poisson[i] = lambda / (2 * (lambda + mu));
+  }
+  c.young = [young = std::move(young), nq](const QuadraturePoint& q) {
+    return young[q.element * nq + q.index];
+  };
+  c.poisson = [poisson = std::move(poisson), nq](const QuadraturePoint& q) {
+    return poisson[q.element * nq + q.index];
+  };
+  return c;
+}
+
 }  // namespace
 
 const std::vector<AnalogyFormulation>& analogy_formulations() {
@@ -157,6 +219,10 @@ const std::vector<AnalogyFormulation>& analogy_formulations() {
       {"heat_area", "Section 4.4.2: E = 1, T = 1/Ae", heat_area},
       {"stiff_shape", "homesh: E = (min Q11 / initial min Q11)^-power, shear-aware stiffening",
        stiff_shape},
+      {"stiff_shear",
+       "homesh: mu = (min Q17/max Q17 * Q11(F))^-power per quadrature point, lambda kept; "
+       "F = J J0^-1 (recommended power 3)",
+       stiff_shear},
   };
   return table;
 }

@@ -22,7 +22,8 @@ struct FormulationParams {
   double poisson = 0.4;  ///< nu
   double heat = 1.0;     ///< scale of the added terms (body force, heat), see above
   /// Exponent of the stiffening E = (min Q17 / max Q17)^-power of stiff_q17
-  /// (and of stiff_shape's E = (q / q0)^-power)
+  /// (and of stiff_shape's E = (q / q0)^-power and stiff_shear's
+  /// mu = (R_e q_F)^-power, for which 3 is the benchmarked value)
   /// (thesis case 8: power 1; higher powers stiffen distorted elements harder,
   /// a homesh extension measured by scripts/rotation_benchmark.py).
   double power = 1.0;
@@ -40,8 +41,10 @@ struct AnalogyFormulation {
 
 /// All formulations: plain, area, force_q17, heat_q17, heat_q4, metric_ref,
 /// metric_ideal, stiff_q17 (Table 4.9 cases 1-8), heat_area (T = 1/Ae,
-/// Section 4.4.2) and stiff_shape (homesh: E from the loss of Q11 shape
-/// quality since the start, the best on the rotation benchmark).
+/// Section 4.4.2), stiff_shape (homesh: E from the loss of Q11 shape
+/// quality since the start) and stiff_shear (homesh: the shear modulus from
+/// case 8's ratio and the shear of the deformation since the start, per
+/// quadrature point; the best on the rotation benchmark).
 const std::vector<AnalogyFormulation>& analogy_formulations();
 
 /// The names of all formulations joined by " | ", for option help texts.
