@@ -4,7 +4,7 @@
 The hole of a coarse quadratic plate mesh (geo/plate_hole_fig413.geo, our stand-in for the
 thesis' Fig 4.13) turns anticlockwise 1 degree per step until the first step that would leave
 an element not certified valid; theta_max is the last valid angle and N the mean CG
-iterations per step. Four parts:
+iterations per step. Five parts:
 
   heat      theta_max of every formulation with a `heat` scale (added body force, heat or
             metric stress) over a range of scales and both signs; the thesis does not give its
@@ -14,12 +14,16 @@ iterations per step. Four parts:
             solve per degree on the current mesh, CG with a Jacobi preconditioner standing in
             for its element-by-element PCG), beside the thesis values;
   variants  homesh's own: each step posed on the initial mesh, and 2 or 4 solves per degree;
+  homesh    homesh's stiffening formulations (stiff_shape, stiff_shear) at their benchmarked
+            power, one solve per degree on the current mesh (direct solver), beside the
+            thesis' best case at each nu;
   plot      theta_max against nu per formulation, ours solid, the thesis dashed; and the best
             of all runs per formulation against the thesis' best case.
 
 Writes into --out (default out/rotation): rotation_table.csv, rotation_sweeps.csv (heat and
-variants), rotation_summary.md (the tables, and the thesis' orderings reproduced or not) and
-rotation.png. The full run takes one to two minutes (71 triangles, 665 rotations).
+variants), rotation_homesh.csv, rotation_summary.md (the tables, and the thesis' orderings
+reproduced or not) and rotation.png. The full run takes about a minute (71 triangles, 679
+rotations).
 
 Run from the repository root:
   PYTHONPATH=build/python /usr/bin/python3 scripts/rotation_benchmark.py [--quick]
@@ -43,6 +47,8 @@ SCALED = ["force_q17", "heat_q17", "heat_q4", "metric_ref", "metric_ideal", "hea
 # scales are small: about 1e-3 for 1 degree per step.
 HEATS = [-0.01, -0.001, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 0.1, 0.3, 1]
 THESIS_SOLVER = {"solver": "cg", "preconditioner": "jacobi"}
+# homesh's stiffening formulations (curving/analogy_formulation.h) and the power each is run at.
+HOMESH = [("stiff_shape", 2), ("stiff_shear", 3)]
 
 
 def read_thesis(path):
@@ -143,6 +149,20 @@ def run_variants(bench, nus, heat):
     return rows
 
 
+def run_homesh(bench, thesis, nus):
+    """homesh's formulations of HOMESH at every nu, one solve per degree on the current mesh,
+    beside the thesis' best of its 8 cases at that nu."""
+    rows = []
+    for (name, power), nu in itertools.product(HOMESH, nus):
+        r = bench.rotate(formulation=name, nu=nu, power=power, solver="ldlt")
+        best = max(theta for (_, n), (theta, _) in thesis.items() if n == nu)
+        rows.append({"formulation": name, "power": power, "nu": nu, "theta_max": r["theta_max"],
+                     "thesis_best": best, "worst_ratio": r["worst_ratio"]})
+        print(f"homesh {name:12s} power {power:g} nu {nu:.2f}: theta_max {r['theta_max']:3d} "
+              f"(thesis' best {best})", flush=True)
+    return rows
+
+
 def write_csv(path, rows):
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -208,9 +228,11 @@ def table_md(nus, rows, cell):
     return lines
 
 
-def best_runs(rows, sweeps):
-    """Per formulation and nu, the run with the largest theta_max of the table and sweeps."""
+def best_runs(rows, sweeps, homesh_rows):
+    """Per formulation and nu, the run with the largest theta_max of the table, sweeps and
+    homesh's formulations."""
     runs = [dict(r, pose="current", substeps=1) for r in rows] + sweeps
+    runs += [dict(r, heat=1, pose="current", substeps=1) for r in homesh_rows]
     best = {}
     for r in runs:
         key = (r["formulation"], r["nu"])
@@ -219,7 +241,21 @@ def best_runs(rows, sweeps):
     return best
 
 
-def write_summary(path, rows, sweeps, nus, bench, geo):
+def homesh_md(nus, homesh_rows):
+    """The table of homesh's formulations against the thesis' best case."""
+    by = {(r["formulation"], r["nu"]): r for r in homesh_rows}
+    lines = ["## homesh's stiffening formulations (1 solve per degree on the current mesh)", "",
+             "| formulation | power | " + " | ".join(f"nu {nu:.2f}" for nu in nus) + " |",
+             "|---|---|" + "---|" * len(nus)]
+    for name, power in HOMESH:
+        lines.append(f"| {name} | {power:g} | " +
+                     " | ".join(str(by[(name, nu)]["theta_max"]) for nu in nus) + " |")
+    lines.append("| thesis, best case | | " +
+                 " | ".join(str(by[(HOMESH[0][0], nu)]["thesis_best"]) for nu in nus) + " |")
+    return lines
+
+
+def write_summary(path, rows, sweeps, homesh_rows, nus, bench, geo):
     heats = {r["formulation"]: r["heat"] for r in rows}
     lines = [f"# Rotation benchmark (thesis Tables 4.1-4.8) on {geo}", "",
              f"Mesh: {bench.triangles} quadratic triangles. {bench.runs} rotations, "
@@ -236,6 +272,8 @@ def write_summary(path, rows, sweeps, nus, bench, geo):
               "## The thesis' orderings", "", "| claim | thesis | ours |", "|---|---|---|"]
     for claim, t, o in orderings(rows, nus):
         lines.append(f"| {claim} | {t} | {o} |")
+    if homesh_rows:
+        lines += [""] + homesh_md(nus, homesh_rows)
     if sweeps:
         at_one = {(s["formulation"], s["nu"]): s["theta_max"] for s in sweeps
                   if s["heat"] == 1 and s["pose"] == "current" and s["substeps"] == 1}
@@ -245,7 +283,7 @@ def write_summary(path, rows, sweeps, nus, bench, geo):
                       "|---|" + "---|" * len(nus)]
             for f in SCALED:
                 lines.append(f"| {f} | " + " | ".join(str(at_one[(f, nu)]) for nu in nus) + " |")
-        best = best_runs(rows, sweeps)
+        best = best_runs(rows, sweeps, homesh_rows)
         lines += ["", "## Best run per formulation: theta_max (heat, pose, solves per degree)", "",
                   "| formulation | " + " | ".join(f"nu {nu:.2f}" for nu in nus) + " |",
                   "|---|" + "---|" * len(nus)]
@@ -264,7 +302,7 @@ def write_summary(path, rows, sweeps, nus, bench, geo):
         out.write("\n".join(lines) + "\n")
 
 
-def plot(path, rows, sweeps, nus):
+def plot(path, rows, sweeps, homesh_rows, nus):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -285,10 +323,11 @@ def plot(path, rows, sweeps, nus):
     ax.grid(alpha=0.3)
     if sweeps:
         ax = axes[0][1]
-        best = best_runs(rows, sweeps)
+        best = best_runs(rows, sweeps, homesh_rows)
+        many = plt.get_cmap("tab20")  # more formulations than tab10 has colours: dark ones first
         for k, f in enumerate(sorted({f for f, _ in best})):
             ax.plot(nus, [best[(f, nu)]["theta_max"] for nu in nus], "-o", ms=3,
-                    color=colours(k % 10), label=f)
+                    color=many((2 * k) % 20 + (2 * k) // 20 % 2), label=f)
         ax.plot(nus, [max(theirs[c][nu] for c in theirs) for nu in nus], "k--", lw=1.5,
                 label="thesis, best case")
         ax.set_title("best run per formulation (heat scale, pose, solves per degree)")
@@ -312,6 +351,8 @@ def main():
     ap.add_argument("--max", type=float, default=360, help="largest angle tried, degrees")
     ap.add_argument("--heat", type=float, help="one heat scale for every formulation (no sweep)")
     ap.add_argument("--no-variants", action="store_true", help="skip homesh's variants")
+    ap.add_argument("--no-homesh", action="store_true",
+                    help="skip homesh's stiffening formulations")
     ap.add_argument("--quick", action="store_true", help="nu = 0.05, 0.25, 0.45, four heats")
     args = ap.parse_args()
 
@@ -332,14 +373,18 @@ def main():
     rows = run_table(bench, thesis, nus, heat)
     if not args.no_variants:
         sweeps += run_variants(bench, nus, heat)
+    homesh_rows = [] if args.no_homesh else run_homesh(bench, thesis, nus)
     gmsh.finalize()
 
     write_csv(os.path.join(args.out, "rotation_table.csv"), rows)
     if sweeps:
         write_csv(os.path.join(args.out, "rotation_sweeps.csv"), sweeps)
+    if homesh_rows:
+        write_csv(os.path.join(args.out, "rotation_homesh.csv"), homesh_rows)
     mesh = os.path.relpath(args.geo, root) + "".join(f", {n} = {v}" for n, v in args.setnumber)
-    write_summary(os.path.join(args.out, "rotation_summary.md"), rows, sweeps, nus, bench, mesh)
-    plot(os.path.join(args.out, "rotation.png"), rows, sweeps, nus)
+    write_summary(os.path.join(args.out, "rotation_summary.md"), rows, sweeps, homesh_rows, nus,
+                  bench, mesh)
+    plot(os.path.join(args.out, "rotation.png"), rows, sweeps, homesh_rows, nus)
     print(f"{bench.runs} rotations, {time.time() - start:.0f} s; wrote {args.out}/")
 
 
