@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "voronoi/crystal_entries.h"
 #include "voronoi/stencil_field.h"
 #include "voronoi/time_heap.h"
 
@@ -23,20 +24,7 @@ constexpr double kSeedBlockCells = 3.0;
 // within this many cells (the metric is taken as the mean of the two ends').
 constexpr double kTrustCells = 8.0;
 
-// The arrival time of one crystal at one node, and the source it is measured
-// from; the entries of a node form a singly linked list through `next`.
-struct Entry {
-  double time = kInf;
-  double source_time = 0.0;
-  int source = -1;  ///< a node, or -1 - s for seed s
-  int node = -1;
-  int label = -1;
-  int next = -1;
-  std::uint8_t accepted = 0;
-  /// Stencil steps from the crystal's own region (0 inside it): the smallest
-  /// over the accepted entries that updated this one, plus 1.
-  std::uint8_t hop = 255;
-};
+using Entry = CrystalEntry;
 
 // The seeds in the Morton (Z) order of their grid cells.
 std::vector<int> morton_order(const CartesianGrid& g, const Eigen::Matrix2Xd& seeds) {
@@ -72,7 +60,8 @@ std::vector<int> morton_order(const CartesianGrid& g, const Eigen::Matrix2Xd& se
 // only adds entries of that crystal. Along the geodesic from its seed to a
 // node of its region, a crystal holds the least time at every node, so it wins
 // each at acceptance and reaches the node, as in one heap of all crystals:
-// the labels are those of exact time order (ties go to the lower label).
+// the labels are those of exact time order (ties go to the crystal first in
+// that order).
 //
 // Inside the sweep the crystals are numbered in that order (crystal c is
 // seed original[c]): their heaps and the entries of their seed blocks then
@@ -85,14 +74,14 @@ class Sweep {
         original_(std::move(original)),
         seeds_(2, seeds.cols()),
         seed_metric_(M.size()),
-        nodes_(field.grid().node_count()),
+        entries_(field.grid().node_count()),
+        winner_(field.grid().node_count()),
         queue_(seeds.cols()),
         slab_(slab_width(field.grid(), M)) {
     for (int c = 0; c < seeds.cols(); ++c) {
       seeds_.col(c) = seeds.col(original_[c]);
       seed_metric_[c] = M[original_[c]];
     }
-    entries_.reserve(field.grid().node_count() + field.grid().node_count() / 4);
   }
 
   // Exact times |x - p_s|_{M_s} on the nodes of the metric ball of smallest
@@ -122,7 +111,7 @@ class Sweep {
         if (t > R || !field_.inside(x) || !field_.visible(p, g.point(i, j))) continue;
         ++placed;
         if (earlier_block(x, t)) continue;
-        const int e = find_or_add(x, s);
+        const int e = entries_.add(x, s);
         entries_[e].hop = 0;
         lower(e, t, -1 - s, 0.0);
       }
@@ -168,36 +157,37 @@ class Sweep {
     TimeHeap heap;
     const auto offer = [&](int x) {
       const int i = x % g.nx, j = x / g.nx;
-      const NodeState& from = nodes_[x];
+      const Entry from = entries_[winner_[x].entry];
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int a = i + di, b = j + dj;
           if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= g.nx || b >= g.ny) continue;
           const int z = g.index(a, b);
-          if (nodes_[z].winner_label >= 0 || !field_.inside(z)) continue;
+          if (winner_[z].entry >= 0 || !field_.inside(z)) continue;
           const Eigen::Vector2d v(di * g.dx, dj * g.dy);
           const double t =
-              from.winner_time + std::sqrt(v.dot(field_.node_metric(original_[from.winner_label], z) * v));
-          const int e = find_or_add(z, from.winner_label);
+              from.time + std::sqrt(v.dot(field_.node_metric(original_[from.label], z) * v));
+          int e = entries_.find(z, from.label);
+          if (e < 0) e = entries_.add(z, from.label);
           if (assign(e, t, z, t)) heap.push({t, e});
         }
     };
     bool missing = false;
     for (int x = 0; x < g.node_count() && !missing; ++x)
-      missing = nodes_[x].winner_label < 0 && field_.inside(x);
+      missing = winner_[x].entry < 0 && field_.inside(x);
     if (!missing) return;
     for (int x = 0; x < g.node_count(); ++x)
-      if (nodes_[x].winner_label >= 0) offer(x);
+      if (winner_[x].entry >= 0) offer(x);
     while (!heap.empty()) {
       const auto [t, e] = heap.top();
       heap.pop();
       Entry& en = entries_[e];
-      if (en.accepted || en.time != t || nodes_[en.node].winner_label >= 0) continue;
-      en.accepted = 1;
+      const int x = entries_.node(e);
+      if (en.accepted() || en.time != t || winner_[x].entry >= 0) continue;
+      en.flags |= Entry::kAccepted;
       en.hop = 0;
-      nodes_[en.node].winner_label = en.label;
-      nodes_[en.node].winner_time = t;
-      offer(en.node);
+      winner_[x] = {e, en.label};
+      offer(x);
     }
   }
 
@@ -213,10 +203,10 @@ class Sweep {
 
   /// The seed whose crystal holds node x (-1: none) and its time there.
   int label(int x) const {
-    const int c = nodes_[x].winner_label;
+    const int c = winner_[x].label;
     return c < 0 ? -1 : original_[c];
   }
-  double time(int x) const { return nodes_[x].winner_time; }
+  double time(int x) const { return entries_[winner_[x].entry].time; }
 
  private:
   // Accepts the entries of one crystal's heap below time `end`; false once
@@ -226,15 +216,14 @@ class Sweep {
       const auto [t, e] = heap.top();
       heap.pop();
       Entry& en = entries_[e];
-      if (en.accepted || en.time != t) continue;
+      if (en.accepted() || en.time != t) continue;
       if (max_steps > 0 && steps_ >= max_steps) return false;
-      en.accepted = 1;
+      en.flags |= Entry::kAccepted;
       ++steps_;
-      NodeState& node = nodes_[en.node];
-      if (node.winner_label < 0 || t < node.winner_time ||
-          (t == node.winner_time && en.label < node.winner_label)) {
-        node.winner_label = en.label;
-        node.winner_time = t;
+      Winner& w = winner_[entries_.node(e)];
+      if (w.entry < 0 || t < entries_[w.entry].time ||
+          (t == entries_[w.entry].time && en.label < w.label)) {
+        w = {e, en.label};
         en.hop = 0;
       }
       if (en.hop < kOwnTimeBand) spread(e);
@@ -243,24 +232,9 @@ class Sweep {
   }
   // Whether a seed block already gives node x a time below t.
   bool earlier_block(int x, double t) const {
-    for (int e = nodes_[x].head; e >= 0; e = entries_[e].next)
+    for (int e = entries_.head(x); e >= 0; e = entries_[e].next)
       if (entries_[e].time < t) return true;
     return false;
-  }
-  int find(int node, int label) const {
-    for (int e = nodes_[node].head; e >= 0; e = entries_[e].next)
-      if (entries_[e].label == label) return e;
-    return -1;
-  }
-  int find_or_add(int node, int label) {
-    if (const int e = find(node, label); e >= 0) return e;
-    Entry en;
-    en.node = node;
-    en.label = label;
-    en.next = nodes_[node].head;
-    entries_.push_back(en);
-    nodes_[node].head = static_cast<int>(entries_.size()) - 1;
-    return nodes_[node].head;
   }
   // Lowers entry e's time to t (measured from `source`); whether it did.
   bool assign(int e, double t, int source, double source_time) {
@@ -283,9 +257,9 @@ class Sweep {
   // entry `from`: its time plus the length of the segment in the crystal's
   // metric (in a varying field, the mean of the metrics at its ends, and only
   // within kTrustCells cells). +infinity if the segment leaves the domain.
-  double from_source(int s, int x, const Entry& from) const {
+  double from_source(int s, int x, const Eigen::Vector2d& px, const Entry& from) const {
     const CartesianGrid& g = field_.grid();
-    const Eigen::Vector2d v = g.point(x % g.nx, x / g.nx) - point(from.source);
+    const Eigen::Vector2d v = px - point(from.source);
     const Eigen::Matrix2d& Mx = field_.node_metric(original_[s], x);
     double length2 = v.dot(Mx * v);
     if (field_.varying()) {
@@ -294,46 +268,60 @@ class Sweep {
           from.source < 0 ? seed_metric_[s] : field_.node_metric(original_[s], from.source);
       length2 = 0.5 * (length2 + v.dot(Mo * v));
     }
-    if (!field_.visible(point(from.source), g.point(x % g.nx, x / g.nx))) return kInf;
+    if (!field_.visible(point(from.source), px)) return kInf;
     return from.source_time + std::sqrt(length2);
   }
-  // The accepted entry of crystal s at node x + o, if x + o is a node the
-  // update from x may use, else -1.
-  int upwind(int s, int x, const Eigen::Vector2i& o, double euclid) const {
+  // The accepted entry of crystal s at node x = (ix, jx) + o, if it is a node
+  // the update from x may use, else -1.
+  int upwind(int s, int x, int ix, int jx, const Eigen::Vector2i& o, double euclid) const {
     const CartesianGrid& g = field_.grid();
-    const int i = x % g.nx + o.x(), j = x / g.nx + o.y();
+    const int i = ix + o.x(), j = jx + o.y();
     if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) return -1;
     const int z = g.index(i, j);
-    const int e = find(z, s);
-    if (e < 0 || !entries_[e].accepted || !field_.passable(x, z, euclid)) return -1;
+    const int e = entries_.find(z, s);
+    if (e < 0 || !entries_[e].accepted() || !field_.passable(x, z, euclid)) return -1;
     return e;
   }
   // Entry e (crystal s at node y) was accepted: update the nodes whose
   // stencil holds y, from the one-sided step and the two sectors next to it
   // (Hopf-Lax), and from the sources of the entries used; the time measured
-  // from a source wins if not larger, else x becomes a source itself.
+  // from a source wins if not larger, else x becomes a source itself. In a
+  // metric constant per crystal without a domain (straight_) every source is
+  // the seed and every time the exact |x - p|_M, which the Hopf-Lax update
+  // never undercuts (the linear interpolation of a convex function
+  // overestimates it): the update is that time, with the same result.
   void spread(int e) {
-    const int s = entries_[e].label, y = entries_[e].node;
+    const CartesianGrid& g = field_.grid();
+    const int s = entries_[e].label, y = entries_.node(e);
     const double a = entries_[e].time;
     const int hop = entries_[e].hop + 1;
     field_.for_each_reverse(original_[s], y, [&](int x, int k) {
       if (!field_.inside(x)) return;
-      const int w = nodes_[x].winner_label;
+      const int w = winner_[x].label;
       if (w >= 0 && (w == s || hop > kOwnTimeBand)) return;
       if (field_.has_domain() && !field_.passable(x, y, field_.euclid(original_[s], x, k))) return;
-      const int target = find_or_add(x, s);
-      if (entries_[target].accepted) return;
+      int target = entries_.find(x, s);
+      if (target < 0) target = entries_.add(x, s);
+      if (entries_[target].accepted()) return;
+      const int ix = x % g.nx, jx = x / g.nx;
+      const Eigen::Vector2d px = g.point(ix, jx);
+      entries_[target].hop = static_cast<std::uint8_t>(std::min<int>(entries_[target].hop, hop));
+      if (straight_) {
+        const Eigen::Vector2d v = px - seeds_.col(s);
+        lower(target, std::max(std::sqrt(v.dot(seed_metric_[s] * v)), a), -1 - s, 0.0);
+        return;
+      }
       const StencilField::Local l = field_.local(original_[s], x, k);
       double t = a + l.length;
-      const int before = upwind(s, x, l.prev, l.euclid_prev);
+      const int before = upwind(s, x, ix, jx, l.prev, l.euclid_prev);
       if (before >= 0) t = std::min(t, hopf_lax(l.before, entries_[before].time, a));
-      const int after = upwind(s, x, l.next, l.euclid_next);
+      const int after = upwind(s, x, ix, jx, l.next, l.euclid_next);
       if (after >= 0) t = std::min(t, hopf_lax(l.after, a, entries_[after].time));
       int source = x;
       double source_time = t, best = kInf;
       for (const int u : {e, before, after}) {
         if (u < 0 || (u != e && entries_[u].source == entries_[e].source)) continue;
-        const double ts = from_source(s, x, entries_[u]);
+        const double ts = from_source(s, x, px, entries_[u]);
         if (ts < best)
           best = ts, source = entries_[u].source, source_time = entries_[u].source_time;
       }
@@ -341,25 +329,22 @@ class Sweep {
         t = std::max(best, a);
       else
         source = x, source_time = t;
-      Entry& en = entries_[target];
-      en.hop = static_cast<std::uint8_t>(std::min<int>(en.hop, hop));
       lower(target, t, source, source_time);
     });
   }
 
   const StencilField& field_;
+  const bool straight_ = !field_.varying() && !field_.has_domain();
   std::vector<int> original_;
   Eigen::Matrix2Xd seeds_;  ///< in the sweep's order, as the next two
   std::vector<Eigen::Matrix2d> seed_metric_;
-  std::vector<Entry> entries_;
-  // Per node, side by side (one cache line per visit): the head of its entry
-  // list, the crystal of least accepted time so far (-1: none yet) and that time.
-  struct NodeState {
-    int head = -1;
-    int winner_label = -1;
-    double winner_time = kInf;
+  CrystalEntries entries_;
+  // Per node, the accepted entry of least time so far and its crystal (-1: none).
+  struct Winner {
+    int entry = -1;
+    int label = -1;
   };
-  std::vector<NodeState> nodes_;
+  std::vector<Winner> winner_;
   std::vector<TimeHeap> queue_;  ///< per crystal, its pending entries
   double slab_;
   long steps_ = 0;

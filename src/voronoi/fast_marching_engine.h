@@ -3,7 +3,10 @@
 // event-driven sweep, an anisotropic fast marching of the arrival times of
 // all seeds at once (Sethian's fast marching with Mirebeau's FM-LBR stencils,
 // voronoi/lattice_stencil.h). Cost O(N log N) in the grid nodes N, whatever
-// the number of seeds.
+// the number of seeds. Each crystal accepts its times in increasing order
+// from its own heap; the crystals take turns in time slabs one cell's
+// crossing wide, in the spatial (Morton) order of their seeds, so that
+// consecutive steps touch neighbouring memory (fast_marching_engine.cpp).
 //
 // Each crystal keeps its own arrival time at the nodes where crystals meet:
 // a node takes the label of the first crystal to arrive, but the others go on

@@ -1,0 +1,72 @@
+#pragma once
+// The arrival times of the crystals at the grid nodes, for the fast-marching
+// engine (voronoi/fast_marching_engine.cpp): any number of crystals per node,
+// most nodes holding one or two. Entry x, for x below the node count N, is
+// node x's first slot, in grid order, so that the entries of neighbouring
+// nodes share cache lines; a node's further entries are overflow entries
+// N, N + 1, ..., linked from its slot through `next`. 32 bytes an entry.
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace homesh {
+
+/// The arrival time of one crystal at one node and the source it is measured
+/// from.
+struct CrystalEntry {
+  static constexpr std::uint8_t kAccepted = 1;  ///< time final
+  double time = std::numeric_limits<double>::infinity();
+  double source_time = 0.0;
+  int source = -1;  ///< a node, or -1 - c for the seed of crystal c
+  int label = -1;   ///< the crystal; -1: a free slot
+  int next = -1;    ///< the node's next entry, or -1
+  std::uint8_t flags = 0;
+  /// Stencil steps from the crystal's own region (0 inside it): the smallest
+  /// over the accepted entries that updated this one, plus 1.
+  std::uint8_t hop = 255;
+  bool accepted() const { return flags & kAccepted; }
+};
+
+class CrystalEntries {
+ public:
+  explicit CrystalEntries(int nodes) : slot_(nodes) {}
+
+  CrystalEntry& operator[](int e) { return e < size() ? slot_[e] : extra_[e - size()]; }
+  const CrystalEntry& operator[](int e) const {
+    return e < size() ? slot_[e] : extra_[e - size()];
+  }
+  /// The node of entry e.
+  int node(int e) const { return e < size() ? e : extra_node_[e - size()]; }
+  /// The first entry at node x, or -1; the others follow through `next`.
+  int head(int x) const { return slot_[x].label < 0 ? -1 : x; }
+  /// The entry of crystal c at node x, or -1.
+  int find(int x, int c) const {
+    for (int e = head(x); e >= 0; e = (*this)[e].next)
+      if ((*this)[e].label == c) return e;
+    return -1;
+  }
+  /// A new entry of crystal c at node x (which must hold none); entries
+  /// added later may move the earlier overflow entries: hold indices, not
+  /// references, across calls.
+  int add(int x, int c) {
+    if (slot_[x].label < 0) {
+      slot_[x].label = c;
+      return x;
+    }
+    CrystalEntry en;
+    en.label = c;
+    en.next = slot_[x].next;
+    extra_.push_back(en);
+    extra_node_.push_back(x);
+    slot_[x].next = size() + static_cast<int>(extra_.size()) - 1;
+    return slot_[x].next;
+  }
+
+ private:
+  int size() const { return static_cast<int>(slot_.size()); }
+
+  std::vector<CrystalEntry> slot_, extra_;
+  std::vector<int> extra_node_;
+};
+
+}  // namespace homesh
