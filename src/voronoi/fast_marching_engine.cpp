@@ -23,6 +23,11 @@ constexpr double kSeedBlockCells = 3.0;
 // In a varying metric field a time is measured straight from a source only
 // within this many cells (the metric is taken as the mean of the two ends').
 constexpr double kTrustCells = 8.0;
+// The sweep's schedule (class Sweep): slabs per window, and grid nodes per
+// block of crystals (about their area; their entries then fit a core's
+// cache, ~1 MB).
+constexpr int kWindowSlabs = 4;
+constexpr long kBlockNodes = 20000;
 
 using Entry = CrystalEntry;
 
@@ -54,14 +59,18 @@ std::vector<int> morton_order(const CartesianGrid& g, const Eigen::Matrix2Xd& se
 // goes through time in slabs one cell's crossing time wide and, within a
 // slab, grows the crystals one after the other, in the Morton order of their
 // seeds (neighbouring crystals in turn: their fronts share cache lines).
-// Where two crystals reach a node in the same slab, the one grown first may
-// win it for a while and spread from it before the other takes it with a
-// smaller time: at most one slab of extra growth past an interface, which
-// only adds entries of that crystal. Along the geodesic from its seed to a
-// node of its region, a crystal holds the least time at every node, so it wins
-// each at acceptance and reaches the node, as in one heap of all crystals:
-// the labels are those of exact time order (ties go to the crystal first in
-// that order).
+// Blocks of crystals consecutive in that order, about kBlockNodes nodes in
+// all, go through a window of kWindowSlabs slabs before the next block
+// starts, so that a block's entries stay in cache from slab to slab.
+// Where two crystals reach a node in the same slab (or, across the border of
+// two blocks, in the same window), the one grown first may win it for a while
+// and spread from it before the other takes it with a smaller time: at most a
+// window of extra growth past an interface, which only adds entries of that
+// crystal (about 2 % more steps with 1e5 seeds on 2000 x 2000). Along the
+// geodesic from its seed to a node of its region, a crystal holds the least
+// time at every node, so it wins each at acceptance and reaches the node, as
+// in one heap of all crystals: the labels are those of exact time order
+// (ties go to the crystal first in that order).
 //
 // Inside the sweep the crystals are numbered in that order (crystal c is
 // seed original[c]): their heaps and the entries of their seed blocks then
@@ -77,7 +86,8 @@ class Sweep {
         entries_(field.grid().node_count()),
         winner_(field.grid().node_count()),
         queue_(seeds.cols()),
-        slab_(slab_width(field.grid(), M)) {
+        slab_(slab_width(field.grid(), M)),
+        block_(std::max<long>(1, kBlockNodes * seeds.cols() / field.grid().node_count())) {
     for (int c = 0; c < seeds.cols(); ++c) {
       seeds_.col(c) = seeds.col(original_[c]);
       seed_metric_[c] = M[original_[c]];
@@ -118,8 +128,9 @@ class Sweep {
     return placed;
   }
 
-  // Accepts every crystal's entries in increasing time up to `stop`, slab by
-  // slab; false if stopped early (at `stop`, or after max_steps entries).
+  // Accepts every crystal's entries in increasing time up to `stop`, window
+  // by window, block by block, slab by slab; false if stopped early (at
+  // `stop`, or after max_steps entries).
   bool run(double stop, long max_steps) {
     std::vector<int> active;
     double first = kInf;
@@ -130,12 +141,22 @@ class Sweep {
       }
     while (!active.empty()) {
       if (first > stop) return false;
-      const double end = std::min(first + slab_, std::nextafter(stop, kInf));
+      const double last = std::min(first + kWindowSlabs * slab_, std::nextafter(stop, kInf));
+      for (std::size_t b = 0; b < active.size();) {
+        std::size_t b1 = b;
+        while (b1 < active.size() && active[b1] / block_ == active[b] / block_) ++b1;
+        for (double end = first + slab_;; end += slab_) {
+          end = std::min(end, last);
+          for (std::size_t k = b; k < b1; ++k)
+            if (!grow(queue_[active[k]], end, max_steps)) return false;
+          if (end >= last) break;
+        }
+        b = b1;
+      }
       first = kInf;
       std::size_t kept = 0;
       for (const int c : active) {
         TimeHeap& heap = queue_[c];
-        if (!grow(heap, end, max_steps)) return false;
         if (heap.empty()) {
           heap.release();
           continue;
@@ -157,13 +178,13 @@ class Sweep {
     TimeHeap heap;
     const auto offer = [&](int x) {
       const int i = x % g.nx, j = x / g.nx;
-      const Entry from = entries_[winner_[x].entry];
+      const Winner from = winner_[x];
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int a = i + di, b = j + dj;
           if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= g.nx || b >= g.ny) continue;
           const int z = g.index(a, b);
-          if (winner_[z].entry >= 0 || !field_.inside(z)) continue;
+          if (winner_[z].label >= 0 || !field_.inside(z)) continue;
           const Eigen::Vector2d v(di * g.dx, dj * g.dy);
           const double t =
               from.time + std::sqrt(v.dot(field_.node_metric(original_[from.label], z) * v));
@@ -174,19 +195,19 @@ class Sweep {
     };
     bool missing = false;
     for (int x = 0; x < g.node_count() && !missing; ++x)
-      missing = winner_[x].entry < 0 && field_.inside(x);
+      missing = winner_[x].label < 0 && field_.inside(x);
     if (!missing) return;
     for (int x = 0; x < g.node_count(); ++x)
-      if (winner_[x].entry >= 0) offer(x);
+      if (winner_[x].label >= 0) offer(x);
     while (!heap.empty()) {
       const auto [t, e] = heap.top();
       heap.pop();
       Entry& en = entries_[e];
       const int x = entries_.node(e);
-      if (en.accepted() || en.time != t || winner_[x].entry >= 0) continue;
+      if (en.accepted() || en.time != t || winner_[x].label >= 0) continue;
       en.flags |= Entry::kAccepted;
       en.hop = 0;
-      winner_[x] = {e, en.label};
+      winner_[x] = {t, en.label};
       offer(x);
     }
   }
@@ -206,7 +227,7 @@ class Sweep {
     const int c = winner_[x].label;
     return c < 0 ? -1 : original_[c];
   }
-  double time(int x) const { return entries_[winner_[x].entry].time; }
+  double time(int x) const { return winner_[x].time; }
 
  private:
   // Accepts the entries of one crystal's heap below time `end`; false once
@@ -221,9 +242,8 @@ class Sweep {
       en.flags |= Entry::kAccepted;
       ++steps_;
       Winner& w = winner_[entries_.node(e)];
-      if (w.entry < 0 || t < entries_[w.entry].time ||
-          (t == entries_[w.entry].time && en.label < w.label)) {
-        w = {e, en.label};
+      if (w.label < 0 || t < w.time || (t == w.time && en.label < w.label)) {
+        w = {t, en.label};
         en.hop = 0;
       }
       if (en.hop < kOwnTimeBand) spread(e);
@@ -339,14 +359,15 @@ class Sweep {
   Eigen::Matrix2Xd seeds_;  ///< in the sweep's order, as the next two
   std::vector<Eigen::Matrix2d> seed_metric_;
   CrystalEntries entries_;
-  // Per node, the accepted entry of least time so far and its crystal (-1: none).
+  // Per node, the least accepted time so far and its crystal (-1: none).
   struct Winner {
-    int entry = -1;
+    double time = kInf;
     int label = -1;
   };
   std::vector<Winner> winner_;
   std::vector<TimeHeap> queue_;  ///< per crystal, its pending entries
   double slab_;
+  long block_;  ///< crystals per block
   long steps_ = 0;
 };
 
@@ -391,7 +412,8 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
     out.labels(x) = sweep.label(x);
     out.time = std::max(out.time, sweep.time(x));
   }
-  std::vector<std::array<int, 2>> collisions;
+  // Pairs as a * 2^32 + b: one integer compare to sort them.
+  std::vector<std::uint64_t> pairs;
   std::vector<char> contact(S, 0);
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
@@ -406,13 +428,14 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
           continue;
         }
         const int b = out.labels(n);
-        if (b > a && (collisions.empty() || collisions.back() != std::array<int, 2>{a, b}))
-          collisions.push_back({a, b});
+        const std::uint64_t pair = (static_cast<std::uint64_t>(a) << 32) | b;
+        if (b > a && (pairs.empty() || pairs.back() != pair)) pairs.push_back(pair);
       }
     }
-  std::sort(collisions.begin(), collisions.end());
-  collisions.erase(std::unique(collisions.begin(), collisions.end()), collisions.end());
-  out.collisions = std::move(collisions);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  for (const std::uint64_t pair : pairs)
+    out.collisions.push_back({static_cast<int>(pair >> 32), static_cast<int>(pair & 0xffffffffu)});
   for (int s = 0; s < S; ++s)
     if (contact[s] && field.has_domain()) out.boundary_contacts.push_back(s);
   return out;
