@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 #include "core/error.h"
 #include "core/progress.h"
@@ -31,17 +33,61 @@ std::vector<int> moving_region(const Mesh& m, const std::vector<bool>& moving, i
   return region;
 }
 
+std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, double reach) {
+  // The disks (centroid, reach * longest edge) of the triangles touching a
+  // moving node, hashed on a grid of their mean diameter.
+  std::vector<Eigen::Vector2d> centre;
+  std::vector<double> radius;
+  for (int e = 0; e < m.num_triangles(); ++e) {
+    bool touches = false;
+    for (int i = 0; i < m.tri.rows() && !touches; ++i) touches = moving[m.tri(i, e)];
+    if (!touches) continue;
+    double h = 0;
+    for (int a = 0; a < 3; ++a)
+      h = std::max(h, (m.x.col(m.tri(a, e)) - m.x.col(m.tri((a + 1) % 3, e))).norm());
+    centre.push_back(m.corner_centroid(e));
+    radius.push_back(reach * h);
+  }
+  std::vector<int> region;
+  if (centre.empty()) return region;
+  double cell = 0;
+  for (double r : radius) cell += 2 * r / double(radius.size());
+  auto key = [cell](double x, double y) {
+    return (std::int64_t(std::floor(x / cell)) << 32) ^ (std::int64_t(std::floor(y / cell)) & 0xffffffff);
+  };
+  std::unordered_map<std::int64_t, std::vector<int>> grid;
+  for (int k = 0; k < int(centre.size()); ++k) {
+    const Eigen::Vector2d c = centre[k];
+    const double r = radius[k];
+    for (double x = std::floor((c.x() - r) / cell); x <= std::floor((c.x() + r) / cell); ++x)
+      for (double y = std::floor((c.y() - r) / cell); y <= std::floor((c.y() + r) / cell); ++y)
+        grid[key((x + 0.5) * cell, (y + 0.5) * cell)].push_back(k);
+  }
+  auto near = [&](int node) {
+    const Eigen::Vector2d x = m.x.col(node);
+    const auto it = grid.find(key(x.x(), x.y()));
+    if (it == grid.end()) return false;
+    for (int k : it->second)
+      if ((x - centre[k]).norm() <= radius[k]) return true;
+    return false;
+  };
+  for (int e = 0; e < m.num_triangles(); ++e)
+    if (near(m.tri(0, e)) || near(m.tri(1, e)) || near(m.tri(2, e))) region.push_back(e);
+  return region;
+}
+
 namespace {
 
-// deform_mesh on the submesh of moving_region: its nodes shared with the rest
-// of the mesh are held where they are.
+// deform_mesh on the submesh of moving_region or reach_region: its nodes
+// shared with the rest of the mesh are held where they are.
 DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
                            const std::vector<bool>& prescribed, const DeformOptions& opt) {
   std::vector<bool> moving(m.num_nodes());
   for (int i = 0; i < m.num_nodes(); ++i)
     moving[i] = prescribed[i] && target.col(i) != m.x.col(i);
-  const std::vector<int> region = moving_region(m, moving, opt.layers);
-  if (region.empty()) return {m, 1.0, true, 0, 0, mesh_validity(m).worst, 0};
+  const std::vector<int> region = opt.layers > 0 ? moving_region(m, moving, opt.layers)
+                                                 : reach_region(m, moving, opt.reach);
+  if (region.empty()) return {m, 1.0, true, 0, 0, mesh_validity(m).worst, 0, 0};
   std::vector<bool> inside(m.num_triangles(), false), outside_node(m.num_nodes(), false);
   for (int e : region) inside[e] = true;
   for (int e = 0; e < m.num_triangles(); ++e)
@@ -74,11 +120,13 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
   }
   DeformOptions whole = opt;
   whole.layers = 0;
+  whole.reach = 0;
   const DeformResult s = deform_mesh(sub, sub_target, sub_prescribed, whole);
   DeformResult r = s;
   r.mesh = m;
   for (std::size_t k = 0; k < global.size(); ++k) r.mesh.x.col(global[k]) = s.mesh.x.col(Eigen::Index(k));
   r.worst_ratio = mesh_validity(r.mesh).worst;
+  r.solved_triangles = int(region.size());
   return r;
 }
 
@@ -90,11 +138,14 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
     throw Error("deform_mesh: target and prescribed must have one entry per node");
   if (opt.increments < 1) throw Error("deform_mesh: increments must be >= 1");
   if (opt.layers < 0) throw Error("deform_mesh: layers must be >= 0");
-  if (opt.layers > 0) return deform_region(m, target, prescribed, opt);
+  if (!(opt.reach >= 0)) throw Error("deform_mesh: reach must be >= 0");
+  if (opt.layers > 0 && opt.reach > 0)
+    throw Error("deform_mesh: give layers or reach, not both");
+  if (opt.layers > 0 || opt.reach > 0) return deform_region(m, target, prescribed, opt);
   const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
   const Eigen::Matrix2Xd start = m.x;
 
-  DeformResult r{m, 0.0, false, 0, 0, 1.0, 0};
+  DeformResult r{m, 0.0, false, 0, 0, 1.0, 0, m.num_triangles()};
   // The prescribed dofs are the same at every increment: one pattern, one
   // symbolic analysis. A halved increment keeps the mesh, hence the stiffness
   // and loads: it only needs new prescribed values (resolve).

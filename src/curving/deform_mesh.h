@@ -32,6 +32,14 @@ struct DeformOptions {
   /// differs from their position), the rest held still, as Gmsh's
   /// Mesh.HighOrderNumLayers; cheaper on large meshes, the result differs.
   int layers = 0;
+  /// 0: no effect. r > 0: solve only on the triangles with a vertex within r h_t
+  /// of the centroid of some triangle t with a moving node, h_t its longest
+  /// edge, the rest held still. The displacement of a curved wall edge decays
+  /// over about one edge length into the mesh (Saint-Venant), whatever the
+  /// number of thin layer elements stacked there, so unlike `layers` the
+  /// region does not shrink to a sliver in a boundary layer. Exclusive with
+  /// `layers`.
+  double reach = 0;
 };
 
 struct DeformResult {
@@ -42,6 +50,7 @@ struct DeformResult {
   int iterations = 0;      ///< total CG iterations (0 for direct solvers)
   double worst_ratio = 1;  ///< worst certified minJ/maxJ of the result
   int invalid_at_failure = 0;  ///< invalid elements of the first rejected state, if it failed
+  int solved_triangles = 0;    ///< triangles the elasticity was posed on (layers, reach)
 };
 
 /// Deforms m so that each node i with prescribed[i] moves from m.x.col(i) to
@@ -55,6 +64,11 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
 /// moving[i]: layer 1 holds every triangle with a moving node, layer k + 1
 /// adds those sharing a node with layer k. Ascending triangle indices.
 std::vector<int> moving_region(const Mesh& m, const std::vector<bool>& moving, int layers);
+
+/// The triangles with a vertex within reach * h_t of the centroid of some
+/// triangle t with a node where moving[i], h_t the longest vertex-to-vertex
+/// edge of t. Ascending triangle indices.
+std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, double reach);
 
 /// prescribed[i] = node i lies on a model point or curve (dim 0 or 1).
 std::vector<bool> boundary_nodes(const Mesh& m);
