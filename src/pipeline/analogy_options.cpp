@@ -14,11 +14,14 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::vector<OptionSpec> analogy_option_specs(const std::string& default_formulation) {
+std::vector<OptionSpec> analogy_option_specs(const std::string& default_formulation,
+                                             const std::string& default_nu) {
   return {{"formulation", default_formulation, analogy_formulation_names()},
-          {"nu", "0.4", "Poisson's ratio, in (-1, 0.5)"},
+          {"nu", default_nu, "Poisson's ratio, in (-1, 0.5)"},
           {"heat", "1", "scale of the added force/heat terms (> 0 expands hot elements)"},
-          {"power", "1", "stiff_q17: E = (min Q17/max Q17)^-power (thesis: 1)"},
+          {"power", "1",
+           "exponent of the stiffening formulations: stiff_q17 E = (min Q17/max Q17)^-power "
+           "(thesis: 1); benchmarked: stiff_shape 2, stiff_shear 3"},
           {"solver", "cholmod", "linear solver: " + joined(linear_solver_names())},
           {"preconditioner", "ichol", "CG preconditioner: " + joined(preconditioner_names())}};
 }

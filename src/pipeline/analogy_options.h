@@ -11,8 +11,10 @@
 
 namespace homesh {
 
-/// The option specs, with `formulation` defaulting to `default_formulation`.
-std::vector<OptionSpec> analogy_option_specs(const std::string& default_formulation = "plain");
+/// The option specs, with `formulation` defaulting to `default_formulation`
+/// and `nu` to `default_nu`.
+std::vector<OptionSpec> analogy_option_specs(const std::string& default_formulation = "plain",
+                                             const std::string& default_nu = "0.4");
 
 struct AnalogyChoice {
   std::string formulation;

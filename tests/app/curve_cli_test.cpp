@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <regex>
+#include <tuple>
 
 #include "gmsh/read_model.h"
 #include "../support/gmsh_session.h"
@@ -63,6 +64,46 @@ TEST_CASE("curve: NACA-7526 at order 4, valid, with a bad option refused", "[app
   REQUIRE(r.output.find("nu must be in (-1, 0.5)") != std::string::npos);
   std::remove(out.c_str());
   std::remove((out + ".opt").c_str());
+}
+
+namespace {
+// (triangles solved on, triangles, worst minJ/maxJ) from the curve stage's log.
+std::tuple<int, int, double> curve_log(const std::string& output) {
+  std::smatch m;
+  REQUIRE(std::regex_search(output, m, std::regex(R"(curve: .* posed on (\d+) of (\d+) triangles: .* worst minJ/maxJ (\d\.\d+))")));
+  return {std::stoi(m[1]), std::stoi(m[2]), std::stod(m[3])};
+}
+}  // namespace
+
+// The defaults (E = 1/Ae, nu = 0.49, one increment, reach 2) against the plain analogy
+// (E = 1, nu = 0.4, 4 increments, whole mesh) on boundary layers; scripts/bench/README.md
+// has the 12 cases against Gmsh.
+TEST_CASE("curve: boundary layers curved near the wall only, better than the plain analogy",
+          "[app]") {
+  // NACA-7526, 10 layers from 1e-3: the solve is posed on the layers and a little beyond.
+  auto r = run_homesh(geo + "naca.geo -m mesh -m layers:walls=aerofoil:n=10:first=1e-3:ratio=1.3 "
+                            "-m curve:p=2");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto [near, all, naca] = curve_log(r.output);
+  CHECK(near < 0.6 * all);  // measured 2702 of 5167
+  CHECK(naca > 0.96);       // measured 0.9715 (plain analogy: 0.9165)
+
+  // The plate, 18 layers from 1e-4, p = 3: 0.980 against 0.926.
+  const std::string base =
+      geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 -m curve:p=3";
+  r = run_homesh(base);
+  const double plate = std::get<2>(curve_log(r.output));
+  r = run_homesh(base + ":formulation=plain:nu=0.4:increments=4:reach=0");
+  const double plain = std::get<2>(curve_log(r.output));
+  CHECK(plate > 0.975);
+  CHECK(plate > plain + 0.04);
+  // Held 6 element layers from the wall, the layers would fold half way: the stage says
+  // so and solves on the whole mesh instead.
+  r = run_homesh(base + ":layers=6");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("solving on the whole mesh") != std::string::npos);
+  CHECK(std::get<2>(curve_log(r.output)) == Approx(plate).margin(1e-4));
 }
 
 TEST_CASE("curve: a bare .msh is curved onto splines rebuilt from its linear boundary", "[app]") {
