@@ -305,11 +305,15 @@ class Sweep {
   // Entry e (crystal s at node y) was accepted: update the nodes whose
   // stencil holds y, from the one-sided step and the two sectors next to it
   // (Hopf-Lax), and from the sources of the entries used; the time measured
-  // from a source wins if not larger, else x becomes a source itself. In a
-  // metric constant per crystal without a domain (straight_) every source is
-  // the seed and every time the exact |x - p|_M, which the Hopf-Lax update
-  // never undercuts (the linear interpolation of a convex function
-  // overestimates it): the update is that time, with the same result.
+  // from a source wins if not larger, else x becomes a source itself.
+  // Shortcuts with the same result, since a crystal accepts its entries in
+  // increasing time and every update of x from y is at least y's time a:
+  // the time from the source x already holds is skipped (it gave at most x's
+  // time, and a new one could only be max(that, a), not less); in a metric
+  // constant per crystal without a domain (straight_) every source is the
+  // seed and every time the exact |x - p|_M, which the Hopf-Lax update never
+  // undercuts (the linear interpolation of a convex function overestimates
+  // it): the update is that time, computed once per entry.
   void spread(int e) {
     const CartesianGrid& g = field_.grid();
     const int s = entries_[e].label, y = entries_.node(e);
@@ -323,9 +327,10 @@ class Sweep {
       int target = entries_.find(x, s);
       if (target < 0) target = entries_.add(x, s);
       if (entries_[target].accepted()) return;
+      entries_[target].hop = static_cast<std::uint8_t>(std::min<int>(entries_[target].hop, hop));
+      if (straight_ && entries_[target].time < kInf) return;
       const int ix = x % g.nx, jx = x / g.nx;
       const Eigen::Vector2d px = g.point(ix, jx);
-      entries_[target].hop = static_cast<std::uint8_t>(std::min<int>(entries_[target].hop, hop));
       if (straight_) {
         const Eigen::Vector2d v = px - seeds_.col(s);
         lower(target, std::max(std::sqrt(v.dot(seed_metric_[s] * v)), a), -1 - s, 0.0);
@@ -339,8 +344,14 @@ class Sweep {
       if (after >= 0) t = std::min(t, hopf_lax(l.after, a, entries_[after].time));
       int source = x;
       double source_time = t, best = kInf;
+      // (In a varying field a seed block's time, in the seed's metric, is not
+      // from_source's, in the mean of the two ends' metrics: not skipped.)
+      const int known =
+          field_.varying() && entries_[target].source < 0 ? x : entries_[target].source;
       for (const int u : {e, before, after}) {
-        if (u < 0 || (u != e && entries_[u].source == entries_[e].source)) continue;
+        if (u < 0 || entries_[u].source == known ||
+            (u != e && entries_[u].source == entries_[e].source))
+          continue;
         const double ts = from_source(s, x, px, entries_[u]);
         if (ts < best)
           best = ts, source = entries_[u].source, source_time = entries_[u].source_time;
