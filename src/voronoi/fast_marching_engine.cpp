@@ -323,10 +323,10 @@ class Sweep {
       if (!field_.inside(x)) return;
       const int w = winner_[x].label;
       if (w >= 0 && (w == s || hop > kOwnTimeBand)) return;
-      if (field_.has_domain() && !field_.passable(x, y, field_.euclid(original_[s], x, k))) return;
       int target = entries_.find(x, s);
+      if (target >= 0 && entries_[target].accepted()) return;
+      if (field_.has_domain() && !field_.passable(x, y, field_.euclid(original_[s], x, k))) return;
       if (target < 0) target = entries_.add(x, s);
-      if (entries_[target].accepted()) return;
       entries_[target].hop = static_cast<std::uint8_t>(std::min<int>(entries_[target].hop, hop));
       if (straight_ && entries_[target].time < kInf) return;
       const int ix = x % g.nx, jx = x / g.nx;
