@@ -45,6 +45,12 @@ class CrystalEntries {
       if ((*this)[e].label == c) return e;
     return -1;
   }
+  /// Whether node x holds an entry of time below t.
+  bool any_below(int x, double t) const {
+    for (int e = head(x); e >= 0; e = (*this)[e].next)
+      if ((*this)[e].time < t) return true;
+    return false;
+  }
   /// A new entry of crystal c at node x (which must hold none); entries
   /// added later may move the earlier overflow entries: hold indices, not
   /// references, across calls.

@@ -11,6 +11,8 @@
 
 #include "core/error.h"
 #include "voronoi/crystal_entries.h"
+#include "voronoi/label_contacts.h"
+#include "voronoi/morton_order.h"
 #include "voronoi/stencil_field.h"
 #include "voronoi/time_heap.h"
 
@@ -30,27 +32,6 @@ constexpr int kWindowSlabs = 4;
 constexpr long kBlockNodes = 20000;
 
 using Entry = CrystalEntry;
-
-// The seeds in the Morton (Z) order of their grid cells.
-std::vector<int> morton_order(const CartesianGrid& g, const Eigen::Matrix2Xd& seeds) {
-  const auto spread_bits = [](std::uint64_t v) {
-    std::uint64_t out = 0;
-    for (int b = 0; b < 32; ++b) out |= ((v >> b) & 1u) << (2 * b);
-    return out;
-  };
-  const int S = static_cast<int>(seeds.cols());
-  std::vector<std::pair<std::uint64_t, int>> key(S);
-  for (int s = 0; s < S; ++s) {
-    const Eigen::Vector2d rel = seeds.col(s) - g.origin;
-    const auto i = static_cast<std::uint64_t>(std::max(0.0, rel.x() / g.dx));
-    const auto j = static_cast<std::uint64_t>(std::max(0.0, rel.y() / g.dy));
-    key[s] = {spread_bits(i) | (spread_bits(j) << 1), s};
-  }
-  std::sort(key.begin(), key.end());
-  std::vector<int> order(S);
-  for (int s = 0; s < S; ++s) order[s] = key[s].second;
-  return order;
-}
 
 // The sweep. Each crystal's entries are accepted in increasing time from its
 // own heap, and a crystal's times depend on its own entries only; crystals
@@ -120,7 +101,7 @@ class Sweep {
         const double t = std::sqrt(v.dot(M * v));
         if (t > R || !field_.inside(x) || !field_.visible(p, g.point(i, j))) continue;
         ++placed;
-        if (earlier_block(x, t)) continue;
+        if (entries_.any_below(x, t)) continue;
         const int e = entries_.add(x, s);
         entries_[e].hop = 0;
         lower(e, t, -1 - s, 0.0);
@@ -249,12 +230,6 @@ class Sweep {
       if (en.hop < kOwnTimeBand) spread(e);
     }
     return true;
-  }
-  // Whether a seed block already gives node x a time below t.
-  bool earlier_block(int x, double t) const {
-    for (int e = entries_.head(x); e >= 0; e = entries_[e].next)
-      if (entries_[e].time < t) return true;
-    return false;
   }
   // Lowers entry e's time to t (measured from `source`); whether it did.
   bool assign(int e, double t, int source, double source_time) {
@@ -423,32 +398,9 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
     out.labels(x) = sweep.label(x);
     out.time = std::max(out.time, sweep.time(x));
   }
-  // Pairs as a * 2^32 + b: one integer compare to sort them.
-  std::vector<std::uint64_t> pairs;
-  std::vector<char> contact(S, 0);
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const int a = out.labels(g.index(i, j));
-      if (a < 0) continue;
-      for (const auto& [di, dj] : {std::pair<int, int>{1, 0}, {0, 1}, {-1, 0}, {0, -1}}) {
-        const int ii = i + di, jj = j + dj;
-        if (ii < 0 || jj < 0 || ii >= g.nx || jj >= g.ny) continue;
-        const int n = g.index(ii, jj);
-        if (!field.inside(n)) {
-          contact[a] = 1;
-          continue;
-        }
-        const int b = out.labels(n);
-        const std::uint64_t pair = (static_cast<std::uint64_t>(a) << 32) | b;
-        if (b > a && (pairs.empty() || pairs.back() != pair)) pairs.push_back(pair);
-      }
-    }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  for (const std::uint64_t pair : pairs)
-    out.collisions.push_back({static_cast<int>(pair >> 32), static_cast<int>(pair & 0xffffffffu)});
-  for (int s = 0; s < S; ++s)
-    if (contact[s] && field.has_domain()) out.boundary_contacts.push_back(s);
+  LabelContacts contacts = label_contacts(field, out.labels, S);
+  out.collisions = std::move(contacts.collisions);
+  out.boundary_contacts = std::move(contacts.boundary_contacts);
   return out;
 }
 
