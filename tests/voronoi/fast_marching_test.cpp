@@ -5,7 +5,9 @@
 #include <random>
 
 #include "core/error.h"
+#include "voronoi/label_contacts.h"
 #include "voronoi/lattice_stencil.h"
+#include "voronoi/morton_order.h"
 #include "voronoi/voronoi_delaunay.h"
 #include "voronoi/voronoi_engines.h"
 #include "voronoi_test_support.h"
@@ -100,6 +102,38 @@ TEST_CASE("the Hopf-Lax sector update is exact for a plane wave", "[voronoi][fmm
     }
   }
   CHECK(exact >= 64);
+}
+
+TEST_CASE("the Morton order visits the cells in Z pattern", "[voronoi][fmm]") {
+  const CartesianGrid g = CartesianGrid::spanning({0, 0}, {4, 4}, 5, 5);
+  // One point in each cell of the 4 x 4 cells, listed row by row.
+  Eigen::Matrix2Xd p(2, 16);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) p.col(4 * j + i) = Eigen::Vector2d(i + 0.5, j + 0.5);
+  // Z of Z's: the 2 x 2 quadrants in turn, each in the order (0,0) (1,0) (0,1) (1,1).
+  const std::vector<int> expected{0, 1, 4, 5, 2, 3, 6, 7, 8, 9, 12, 13, 10, 11, 14, 15};
+  CHECK(morton_order(g, p) == expected);
+}
+
+TEST_CASE("label contacts: pairs across grid edges, crystals at the outside", "[voronoi][fmm]") {
+  // A 4 x 3 grid, labels by row (j = 0 at the bottom), the domain all but
+  // the top-right node:
+  //   2  2  1  .
+  //   0  2  1  1
+  //   0  0  1  1
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({0, 0}, {3, 2}, 4, 3);
+  p.seeds = Eigen::Matrix2Xd::Zero(2, 3);
+  p.domain = -Eigen::VectorXd::Ones(12);
+  p.domain(11) = 1.0;
+  Eigen::VectorXi labels(12);
+  labels << 0, 0, 1, 1, 0, 2, 1, 1, 2, 2, 1, -1;
+  const LabelContacts c = label_contacts(StencilField(p), labels, 3);
+  CHECK(c.collisions == std::vector<std::array<int, 2>>{{0, 1}, {0, 2}, {1, 2}});
+  CHECK(c.boundary_contacts == std::vector<int>{1});
+  p.domain.resize(0);
+  labels(11) = 1;
+  CHECK(label_contacts(StencilField(p), labels, 3).boundary_contacts.empty());
 }
 
 TEST_CASE("fast marching labels match the exact metric Voronoi diagram at anisotropy 1, 10, 100",
