@@ -65,7 +65,8 @@ class Sweep {
         seeds_(2, seeds.cols()),
         seed_metric_(M.size()),
         entries_(field.grid().node_count()),
-        winner_(field.grid().node_count()),
+        winner_(field.grid().node_count(), -1),
+        winner_time_(field.grid().node_count(), kInf),
         queue_(seeds.cols()),
         slab_(slab_width(field.grid(), M)),
         block_(std::max<long>(1, kBlockNodes * seeds.cols() / field.grid().node_count())) {
@@ -159,36 +160,38 @@ class Sweep {
     TimeHeap heap;
     const auto offer = [&](int x) {
       const int i = x % g.nx, j = x / g.nx;
-      const Winner from = winner_[x];
+      const int from = winner_[x];
+      const double from_time = winner_time_[x];
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int a = i + di, b = j + dj;
           if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= g.nx || b >= g.ny) continue;
           const int z = g.index(a, b);
-          if (winner_[z].label >= 0 || !field_.inside(z)) continue;
+          if (winner_[z] >= 0 || !field_.inside(z)) continue;
           const Eigen::Vector2d v(di * g.dx, dj * g.dy);
           const double t =
-              from.time + std::sqrt(v.dot(field_.node_metric(original_[from.label], z) * v));
-          int e = entries_.find(z, from.label);
-          if (e < 0) e = entries_.add(z, from.label);
+              from_time + std::sqrt(v.dot(field_.node_metric(original_[from], z) * v));
+          int e = entries_.find(z, from);
+          if (e < 0) e = entries_.add(z, from);
           if (assign(e, t, z, t)) heap.push({t, e});
         }
     };
     bool missing = false;
     for (int x = 0; x < g.node_count() && !missing; ++x)
-      missing = winner_[x].label < 0 && field_.inside(x);
+      missing = winner_[x] < 0 && field_.inside(x);
     if (!missing) return;
     for (int x = 0; x < g.node_count(); ++x)
-      if (winner_[x].label >= 0) offer(x);
+      if (winner_[x] >= 0) offer(x);
     while (!heap.empty()) {
       const auto [t, e] = heap.top();
       heap.pop();
       Entry& en = entries_[e];
       const int x = entries_.node(e);
-      if (en.accepted() || en.time != t || winner_[x].label >= 0) continue;
+      if (en.accepted() || en.time != t || winner_[x] >= 0) continue;
       en.flags |= Entry::kAccepted;
       en.hop = 0;
-      winner_[x] = {t, en.label};
+      winner_[x] = en.label;
+      winner_time_[x] = t;
       offer(x);
     }
   }
@@ -205,10 +208,10 @@ class Sweep {
 
   /// The seed whose crystal holds node x (-1: none) and its time there.
   int label(int x) const {
-    const int c = winner_[x].label;
+    const int c = winner_[x];
     return c < 0 ? -1 : original_[c];
   }
-  double time(int x) const { return winner_[x].time; }
+  double time(int x) const { return winner_time_[x]; }
 
  private:
   // Accepts the entries of one crystal's heap below time `end`; false once
@@ -222,9 +225,11 @@ class Sweep {
       if (max_steps > 0 && steps_ >= max_steps) return false;
       en.flags |= Entry::kAccepted;
       ++steps_;
-      Winner& w = winner_[entries_.node(e)];
-      if (w.label < 0 || t < w.time || (t == w.time && en.label < w.label)) {
-        w = {t, en.label};
+      const int x = entries_.node(e);
+      const int w = winner_[x];
+      if (w < 0 || t < winner_time_[x] || (t == winner_time_[x] && en.label < w)) {
+        winner_[x] = en.label;
+        winner_time_[x] = t;
         en.hop = 0;
       }
       if (en.hop < kOwnTimeBand) spread(e);
@@ -296,7 +301,7 @@ class Sweep {
     const int hop = entries_[e].hop + 1;
     field_.for_each_reverse(original_[s], y, [&](int x, int k) {
       if (!field_.inside(x)) return;
-      const int w = winner_[x].label;
+      const int w = winner_[x];
       if (w >= 0 && (w == s || hop > kOwnTimeBand)) return;
       int target = entries_.find(x, s);
       if (target >= 0 && entries_[target].accepted()) return;
@@ -345,12 +350,10 @@ class Sweep {
   Eigen::Matrix2Xd seeds_;  ///< in the sweep's order, as the next two
   std::vector<Eigen::Matrix2d> seed_metric_;
   CrystalEntries entries_;
-  // Per node, the least accepted time so far and its crystal (-1: none).
-  struct Winner {
-    double time = kInf;
-    int label = -1;
-  };
-  std::vector<Winner> winner_;
+  // Per node, the crystal of least accepted time so far (-1: none) and that
+  // time, apart: the updates read only the first.
+  std::vector<int> winner_;
+  std::vector<double> winner_time_;
   std::vector<TimeHeap> queue_;  ///< per crystal, its pending entries
   double slab_;
   long block_;  ///< crystals per block
