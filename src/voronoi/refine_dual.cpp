@@ -27,6 +27,7 @@ RefinedDual refine_dual(VoronoiProblem problem, const std::string& engine,
     std::vector<Eigen::Vector2d> added;
     for (int k = 0; k < faults.cols(); ++k) {
       const Eigen::Vector2d p = faults.col(k);
+      if (refine.allowed && !refine.allowed(p)) continue;
       const Eigen::Vector2i n = g.nearest_node(p);
       const int node = g.index(n.x(), n.y());
       if (problem.domain.size() > 0 && problem.domain(node) > -clearance) continue;
@@ -36,8 +37,9 @@ RefinedDual refine_dual(VoronoiProblem problem, const std::string& engine,
         clear = (problem.seeds.col(s) - p).norm() >= clearance;
       for (const Eigen::Vector2d& q : added) clear = clear && (q - p).norm() >= clearance;
       for (const auto& [a, b] : refine.segments)
-        clear = clear && (p - 0.5 * (problem.seeds.col(a) + problem.seeds.col(b))).squaredNorm() >=
-                             0.25 * (problem.seeds.col(a) - problem.seeds.col(b)).squaredNorm();
+        clear = clear && (p - 0.5 * (problem.seeds.col(a) + problem.seeds.col(b))).norm() >=
+                             0.5 * (problem.seeds.col(a) - problem.seeds.col(b)).norm() +
+                                 refine.circle_cells * g.ds();
       if (clear) added.push_back(p);
     }
     if (added.empty()) break;

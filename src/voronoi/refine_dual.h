@@ -6,6 +6,7 @@
 // well-separated ones, as Delaunay refinement does (Chew 1989, Ruppert 1995).
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,14 @@ struct RefineOptions {
   /// seed (boundary_encroachment.h): such a seed would take the segment out
   /// of the dual.
   std::vector<std::array<int, 2>> segments;
+  /// ... and none within this many cells outside it: the triple point of
+  /// the segment's ends and a seed just outside the circle lies a fraction of
+  /// that inside the wall, closer than a grid resolves (docs/voronoi.md).
+  double circle_cells = 0.5;
+  /// Where a seed may be added (empty: anywhere), e.g. well inside a window
+  /// (window_regrowth.h), whose triangles near its edge give way to the
+  /// global dual's.
+  std::function<bool(const Eigen::Vector2d&)> allowed;
 };
 
 struct RefinedDual {

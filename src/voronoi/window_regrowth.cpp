@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <utility>
@@ -25,6 +26,111 @@ struct Box {
 int root(std::vector<int>& parent, int k) {
   while (parent[k] != k) k = parent[k] = parent[parent[k]];
   return k;
+}
+
+// The global dual with the window's triangles in `inner`: seeds (the
+// global ones, then those the window's refinement added), triangles and
+// their Voronoi vertices.
+struct Merge {
+  Eigen::Matrix2Xd seeds;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Eigen::Vector2d> vertex;
+  int nodes = 0;  // window grid nodes along the longer side
+};
+
+// The crystals of the seeds in `outer` grown again by refine_dual on a grid
+// of spacing ds over it, seeds added only in `core` (their triangles then lie
+// in `inner`), the segments inside protected from added seeds, and
+// merged with the dual `at` (vertices `vertex`): its triangles whose vertex is
+// outside `inner`, the window's inside, the seam mended within `band` of it.
+Merge grow_window(const VoronoiProblem& problem, const RegrownDual& at,
+                  const std::vector<Eigen::Vector2d>& vertex,
+                  const std::vector<std::array<int, 2>>& segments,
+                  const std::function<Eigen::VectorXd(const CartesianGrid&)>& domain_on,
+                  const std::string& engine, const Box& core, const Box& inner, const Box& outer,
+                  double ds, double band) {
+  VoronoiProblem w;
+  w.grid.origin = outer.lo;
+  w.grid.dx = w.grid.dy = ds;
+  w.grid.nx = static_cast<int>(std::ceil((outer.hi.x() - outer.lo.x()) / ds)) + 1;
+  w.grid.ny = static_cast<int>(std::ceil((outer.hi.y() - outer.lo.y()) / ds)) + 1;
+  w.metric = problem.metric;
+  w.contact = problem.contact;
+  w.domain = domain_on(w.grid);
+  std::vector<int> global;
+  for (int s = 0; s < at.seeds.cols(); ++s)
+    if (outer.holds(at.seeds.col(s))) global.push_back(s);
+  w.seeds.resize(2, static_cast<Eigen::Index>(global.size()));
+  for (std::size_t k = 0; k < global.size(); ++k) w.seeds.col(k) = at.seeds.col(global[k]);
+  const int local = static_cast<int>(global.size());
+  RefineOptions refine;
+  refine.allowed = [core](const Eigen::Vector2d& p) { return core.holds(p); };
+  std::vector<int> to_local(at.seeds.cols(), -1);
+  for (int k = 0; k < local; ++k) to_local[global[k]] = k;
+  for (const auto& [a, b] : segments)
+    if (to_local[a] >= 0 && to_local[b] >= 0) refine.segments.push_back({to_local[a], to_local[b]});
+  const RefinedDual r = refine_dual(w, engine, {}, refine);
+
+  Merge out;
+  out.seeds = at.seeds;
+  out.nodes = std::max(w.grid.nx, w.grid.ny);
+  const std::vector<std::array<int, 3>>& wt = r.result.dual.triangles;
+  const auto to_global = [&](const std::array<int, 3>& t) {
+    std::array<int, 3> g{};
+    for (int k = 0; k < 3; ++k) {
+      const int s = t[k];
+      if (s >= local) {
+        // A seed the window's refinement added: now a global seed.
+        if (s >= static_cast<int>(global.size())) global.resize(s + 1, -1);
+        if (global[s] < 0) {
+          global[s] = static_cast<int>(out.seeds.cols());
+          out.seeds.conservativeResize(2, out.seeds.cols() + 1);
+          out.seeds.col(global[s]) = r.seeds.col(s);
+        }
+      }
+      g[k] = global[s];
+    }
+    return g;
+  };
+  // The seam: each grid places a Voronoi vertex near the inner box's edge to
+  // its own accuracy, so the same triangle may come from both or neither,
+  // and near-cocircular seeds may be split the other way. A triangle is
+  // taken unless one of its directed edges (counter-clockwise) is taken
+  // already: the window's inside the box first, then the global ones outside
+  // it (against the window's only: faults of the global dual are left to
+  // conforming_triangulation), then the window's and the global ones within
+  // `band` of the box's edge where a gap is left.
+  std::set<std::pair<int, int>> window_edges, taken;
+  const auto untaken = [](const std::set<std::pair<int, int>>& edges, const std::array<int, 3>& t) {
+    for (int k = 0; k < 3; ++k)
+      if (edges.count({t[k], t[(k + 1) % 3]})) return false;
+    return true;
+  };
+  const auto take = [&](const std::array<int, 3>& t, const Eigen::Vector2d& v, bool window) {
+    for (int k = 0; k < 3; ++k) {
+      taken.insert({t[k], t[(k + 1) % 3]});
+      if (window) window_edges.insert({t[k], t[(k + 1) % 3]});
+    }
+    out.triangles.push_back(t);
+    out.vertex.push_back(v);
+  };
+  const Box near = inner.grown(band), deep = inner.grown(-band);
+  for (std::size_t f = 0; f < wt.size(); ++f)
+    if (inner.holds(r.result.dual.vertices.col(f)))
+      take(to_global(wt[f]), r.result.dual.vertices.col(f), true);
+  for (std::size_t f = 0; f < at.triangles.size(); ++f)
+    if (!inner.holds(vertex[f]) && untaken(window_edges, at.triangles[f]))
+      take(at.triangles[f], vertex[f], false);
+  for (std::size_t f = 0; f < wt.size(); ++f) {
+    const Eigen::Vector2d v = r.result.dual.vertices.col(f);
+    if (inner.holds(v) || !near.holds(v)) continue;
+    const std::array<int, 3> t = to_global(wt[f]);
+    if (untaken(taken, t)) take(t, v, true);
+  }
+  for (std::size_t f = 0; f < at.triangles.size(); ++f)
+    if (inner.holds(vertex[f]) && !deep.holds(vertex[f]) && untaken(taken, at.triangles[f]))
+      take(at.triangles[f], vertex[f], false);
+  return out;
 }
 
 }  // namespace
@@ -86,66 +192,37 @@ RegrownDual regrow_windows(const VoronoiProblem& problem,
       h_max = std::max(h_max, size[k]);
     }
     const Box inner = spots.grown(o.pad * h_max), outer = inner.grown(o.pad * h_max);
+    const double band = std::min(o.seam_cells * problem.grid.ds(), 0.5 * o.pad * h_max);
+    const Box core = inner.grown(-0.5 * o.pad * h_max);
     const double extent = (outer.hi - outer.lo).maxCoeff();
-    const double ds = std::max(h_min / o.cells, extent / (o.max_nodes - 1));
+    const double ds_min = extent / (o.max_nodes - 1);
+    double ds = std::max(std::min(h_min / o.cells, problem.grid.ds() / o.finer), ds_min);
     if (ds >= 0.9 * problem.grid.ds()) continue;
-
-    VoronoiProblem w;
-    w.grid.origin = outer.lo;
-    w.grid.dx = w.grid.dy = ds;
-    w.grid.nx = static_cast<int>(std::ceil((outer.hi.x() - outer.lo.x()) / ds)) + 1;
-    w.grid.ny = static_cast<int>(std::ceil((outer.hi.y() - outer.lo.y()) / ds)) + 1;
-    w.metric = problem.metric;
-    w.contact = problem.contact;
-    w.domain = domain_on(w.grid);
-    std::vector<int> global;
-    for (int s = 0; s < out.seeds.cols(); ++s)
-      if (outer.holds(out.seeds.col(s))) global.push_back(s);
-    w.seeds.resize(2, static_cast<Eigen::Index>(global.size()));
-    for (std::size_t k = 0; k < global.size(); ++k) w.seeds.col(k) = out.seeds.col(global[k]);
-    const int local = static_cast<int>(global.size());
-    // The boundary segments inside the window protected from added seeds.
-    RefineOptions refine;
-    std::vector<int> to_local(out.seeds.cols(), -1);
-    for (int k = 0; k < local; ++k) to_local[global[k]] = k;
-    for (const auto& [a, b] : segments)
-      if (to_local[a] >= 0 && to_local[b] >= 0)
-        refine.segments.push_back({to_local[a], to_local[b]});
-    const RefinedDual r = refine_dual(w, engine, {}, refine);
-    ++out.windows;
-    out.window_nodes = std::max(out.window_nodes, std::max(w.grid.nx, w.grid.ny));
-
-    // The merge: the global triangles outside the inner box, the window's inside.
-    std::vector<std::array<int, 3>> merged;
-    std::vector<Eigen::Vector2d> merged_vertex;
-    for (std::size_t f = 0; f < out.triangles.size(); ++f)
-      if (!inner.holds(vertex[f])) {
-        merged.push_back(out.triangles[f]);
-        merged_vertex.push_back(vertex[f]);
+    std::vector<std::array<int, 2>> cluster;
+    for (int k = 0; k < m; ++k)
+      if (root(parent, k) == c) cluster.push_back(missed[k]);
+    // The window grown at ds, then twice as fine while it still misses some
+    // of the cluster's segments and the node cap allows; the attempt missing
+    // the fewest (the finer on a tie) is merged.
+    Merge best;
+    int best_missed = std::numeric_limits<int>::max();
+    for (;;) {
+      Merge attempt = grow_window(problem, out, vertex, segments, domain_on, engine, core, inner,
+                                  outer, ds, band);
+      const int left = static_cast<int>(missed_segments(cluster, attempt.triangles).size());
+      out.window_nodes = std::max(out.window_nodes, attempt.nodes);
+      if (left <= best_missed) {
+        best = std::move(attempt);
+        best_missed = left;
       }
-    const std::vector<std::array<int, 3>>& wt = r.result.dual.triangles;
-    for (std::size_t f = 0; f < wt.size(); ++f) {
-      const Eigen::Vector2d v = r.result.dual.vertices.col(f);
-      if (!inner.holds(v)) continue;
-      std::array<int, 3> t{};
-      for (int k = 0; k < 3; ++k) {
-        const int s = wt[f][k];
-        if (s >= local) {
-          // A seed the window's refinement added: now a global seed.
-          if (s >= static_cast<int>(global.size())) global.resize(s + 1, -1);
-          if (global[s] < 0) {
-            global[s] = static_cast<int>(out.seeds.cols());
-            out.seeds.conservativeResize(2, out.seeds.cols() + 1);
-            out.seeds.col(global[s]) = r.seeds.col(s);
-          }
-        }
-        t[k] = global[s];
-      }
-      merged.push_back(t);
-      merged_vertex.push_back(v);
+      if (left == 0 || ds <= ds_min) break;
+      ds = std::max(0.5 * ds, ds_min);
+      ++out.finer_windows;
     }
-    out.triangles = std::move(merged);
-    vertex = std::move(merged_vertex);
+    ++out.windows;
+    out.seeds = std::move(best.seeds);
+    out.triangles = std::move(best.triangles);
+    vertex = std::move(best.vertex);
   }
   return out;
 }

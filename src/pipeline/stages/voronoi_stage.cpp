@@ -334,9 +334,9 @@ void run(Context& ctx, const Options& opt) {
     if (w.windows > 0)
       ctx.log.info(
           "voronoi: surface {}: the dual missed {} boundary segments: regrown in {} windows "
-          "(finer grids of up to {} nodes per side), +{} seeds",
+          "(finer grids of up to {} nodes per side, {} grown again twice as fine), +{} seeds",
           surface.tag, missed_segments(segments, r.result.dual.triangles).size(), w.windows,
-          w.window_nodes, w.seeds.cols() - r.seeds.cols());
+          w.window_nodes, w.finer_windows, w.seeds.cols() - r.seeds.cols());
     if (c.filled > 0 || c.dual_dropped > 0)
       ctx.log.info(
           "voronoi: surface {}: the dual does not conform: {} of {} boundary segments missing "
