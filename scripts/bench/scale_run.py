@@ -6,7 +6,8 @@ Pipeline, in one process on the Gmsh model of geo/plate_hole.geo (hole radius 0.
 square [-1, 1]^2):
   mesh     homesh.mesh(factor=F)  - Gmsh's frontal mesher, all sizes scaled by F
   layers   homesh.layers(walls="hole", n=5, first=1e-3, ratio=1.3)
-  curve    homesh.curve(p=3)      - the default elastic analogy (plain, 4 increments, cholmod)
+  curve    homesh.curve(p=3)      - the default elastic analogy (E = 1/Ae, nu = 0.49, one
+                                    increment, solved within reach 2 of the wall, cholmod)
   quality  homesh.quality()       - certified validity and the Q4, Q17, Q11 views
   write    homesh.write(OUTDIR/scale_run.msh)
 Each stage is timed with perf_counter (wall) and process_time (CPU); "peak RSS" is the
