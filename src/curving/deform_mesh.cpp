@@ -18,6 +18,13 @@ std::vector<bool> boundary_nodes(const Mesh& m) {
   return b;
 }
 
+std::vector<bool> vertex_nodes(const Mesh& m) {
+  std::vector<bool> v(static_cast<std::size_t>(m.num_nodes()), false);
+  for (int e = 0; e < m.num_triangles(); ++e)
+    for (int k = 0; k < 3; ++k) v[m.tri(k, e)] = true;
+  return v;
+}
+
 std::vector<int> moving_region(const Mesh& m, const std::vector<bool>& moving, int layers) {
   std::vector<bool> reached = moving, selected(m.num_triangles(), false);
   for (int layer = 0; layer < layers; ++layer) {
@@ -186,8 +193,12 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
       continue;
     }
     if (r.invalid_at_failure == 0) r.invalid_at_failure = v.invalid;
-    if (++halvings > opt.max_halvings) return r;
+    // Not a count of halvings in a row: after each acceptance the step doubles,
+    // so a motion that creeps towards its validity limit would halve and
+    // succeed forever in ever smaller steps.
+    ++halvings;
     step *= 0.5;
+    if (step < std::ldexp(full_step, -opt.max_halvings)) return r;
   }
   r.complete = true;
   r.invalid_at_failure = 0;

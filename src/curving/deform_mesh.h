@@ -4,10 +4,10 @@
 // the interior follows the solution of the elasticity problem posed on the
 // current (already deformed) mesh, with the coefficients of the chosen
 // formulation re-evaluated on it. Validity is certified after every increment
-// (Bezier bounds of det J); an increment that would break it is halved, up to
-// `max_halvings` times in a row, before the deformation gives up and returns the
-// last valid state; after an accepted increment the step doubles again, up to
-// its initial size. The stiffness changes with the mesh at every accepted
+// (Bezier bounds of det J); an increment that would break it is halved, and
+// once a step below the first increment / 2^max_halvings would be needed the
+// deformation gives up and returns the last valid state; after an accepted
+// increment the step doubles again, up to its initial size. The stiffness changes with the mesh at every accepted
 // increment (it is posed on the deformed mesh), so each one is assembled and
 // factorised anew on the same pattern and symbolic analysis; a halved increment
 // re-solves with the factor it already has.
@@ -26,7 +26,7 @@ struct DeformOptions {
   FormulationParams params;
   LinearSolverOptions solver;
   int increments = 4;    ///< equal load increments from start to target
-  int max_halvings = 6;  ///< halvings of a failing increment before giving up
+  int max_halvings = 6;  ///< smallest step: the first increment / 2^max_halvings
   /// 0: the elasticity is solved on the whole mesh. k > 0: only on the elements
   /// within k element layers of the moving nodes (prescribed nodes whose target
   /// differs from their position), the rest held still, as Gmsh's
@@ -72,5 +72,8 @@ std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, do
 
 /// prescribed[i] = node i lies on a model point or curve (dim 0 or 1).
 std::vector<bool> boundary_nodes(const Mesh& m);
+
+/// vertex[i] = node i is a corner of some triangle (a node of the linear mesh).
+std::vector<bool> vertex_nodes(const Mesh& m);
 
 }  // namespace homesh
