@@ -75,9 +75,9 @@ std::tuple<int, int, double> curve_log(const std::string& output) {
 }
 }  // namespace
 
-// The defaults (E = 1/Ae, nu = 0.49, one increment, reach 2) against the plain analogy
-// (E = 1, nu = 0.4, 4 increments, whole mesh) on boundary layers; scripts/bench/README.md
-// has the 12 cases against Gmsh.
+// The defaults (E = 1/Ae, nu = 0.49, one increment, vertices fixed, reach 2) against the
+// plain analogy (E = 1, nu = 0.4, 4 increments, every node free, whole mesh) on boundary
+// layers; scripts/bench/README.md has the 12 cases against Gmsh.
 TEST_CASE("curve: boundary layers curved near the wall only, better than the plain analogy",
           "[app]") {
   // NACA-7526, 10 layers from 1e-3: the solve is posed on the layers and a little beyond.
@@ -87,23 +87,53 @@ TEST_CASE("curve: boundary layers curved near the wall only, better than the pla
   REQUIRE(r.exit_code == 0);
   const auto [near, all, naca] = curve_log(r.output);
   CHECK(near < 0.6 * all);  // measured 2702 of 5167
-  CHECK(naca > 0.96);       // measured 0.9715 (plain analogy: 0.9165)
+  CHECK(naca > 0.96);       // measured 0.9669 (plain analogy: 0.9165)
 
-  // The plate, 18 layers from 1e-4, p = 3: 0.980 against 0.926.
+  // The plate, 18 layers from 1e-4, p = 3: 0.973 against 0.926.
   const std::string base =
       geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 -m curve:p=3";
   r = run_homesh(base);
   const double plate = std::get<2>(curve_log(r.output));
-  r = run_homesh(base + ":formulation=plain:nu=0.4:increments=4:reach=0");
+  r = run_homesh(base + ":formulation=plain:nu=0.4:increments=4:reach=0:vertices=free");
   const double plain = std::get<2>(curve_log(r.output));
-  CHECK(plate > 0.975);
+  CHECK(plate > 0.97);
   CHECK(plate > plain + 0.04);
   // Held 6 element layers from the wall, the layers would fold half way: the stage says
-  // so and solves on the whole mesh instead.
+  // so and solves on the whole mesh with every interior node free instead.
   r = run_homesh(base + ":layers=6");
   REQUIRE(r.exit_code == 0);
-  CHECK(r.output.find("solving on the whole mesh") != std::string::npos);
-  CHECK(std::get<2>(curve_log(r.output)) == Approx(plate).margin(1e-4));
+  CHECK(r.output.find("solving on the whole mesh with every interior node free") !=
+        std::string::npos);
+  const double fallback = std::get<2>(curve_log(r.output));
+  r = run_homesh(base + ":reach=0:vertices=free");
+  CHECK(fallback == Approx(std::get<2>(curve_log(r.output))).margin(1e-4));
+  // vertices=fixed keeps the linear mesh: every triangle's corners where the layers put
+  // them (the 1e-4 first layer exactly), the free vertices moved.
+  const std::string lin = "/tmp/homesh_curve_layers_lin.msh", out = "/tmp/homesh_curve_layers.msh";
+  REQUIRE(run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 " +
+                     lin).exit_code == 0);
+  REQUIRE(run_homesh(lin + " -m curve:p=3 " + out).exit_code == 0);
+  REQUIRE(run_homesh(lin + " -m curve:p=3:vertices=free:reach=0 " + out + ".free.msh").exit_code == 0);
+  homesh::test::GmshSession session;
+  gmsh::open(lin);
+  const homesh::Mesh a = homesh::gmsh_adapter::read_model(lin);
+  auto corner_shift = [&](const std::string& path) {
+    gmsh::clear();
+    gmsh::open(path);
+    const homesh::Mesh b = homesh::gmsh_adapter::read_model(path);
+    REQUIRE(b.num_triangles() == a.num_triangles());
+    double shift = 0;
+    for (int e = 0; e < a.num_triangles(); ++e)
+      for (int k = 0; k < 3; ++k)
+        shift = std::max(shift, (b.x.col(b.tri(k, e)) - a.x.col(a.tri(k, e))).norm());
+    return shift;
+  };
+  CHECK(corner_shift(out) == 0.0);
+  CHECK(corner_shift(out + ".free.msh") > 1e-6);
+  for (const std::string& f : {lin, out, out + ".free.msh"}) {
+    std::remove(f.c_str());
+    std::remove((f + ".opt").c_str());
+  }
 }
 
 TEST_CASE("curve: a bare .msh is curved onto splines rebuilt from its linear boundary", "[app]") {

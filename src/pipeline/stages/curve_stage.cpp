@@ -48,6 +48,10 @@ void run(Context& ctx, const Options& opt) {
   d.params = analogy.params;
   d.solver = analogy.solver;
   d.increments = opt.get_int("increments", 1, 1000);
+  const std::string vertices = opt.get_string("vertices");
+  if (vertices != "fixed" && vertices != "free")
+    throw Error("stage 'curve': vertices = " + vertices + " must be fixed or free");
+  const bool fixed_vertices = vertices == "fixed";
   d.layers = opt.get_int("layers", 0, 1000);
   d.reach = opt.get_double("reach");
   if (!(d.reach >= 0)) throw Error(fmt::format("stage 'curve': reach = {:g} must be >= 0", d.reach));
@@ -61,11 +65,27 @@ void run(Context& ctx, const Options& opt) {
   } else {
     target = rebuilt_boundary(ctx, raised, corner);
   }
-  DeformResult r = deform_mesh(raised, target, boundary_nodes(raised), d);
-  if (!r.complete && (d.reach > 0 || d.layers > 0)) {
-    ctx.log.info("curve: the solve near the boundary kept the mesh valid only up to {:.1f} % of "
-                 "the motion; solving on the whole mesh",
-                 100 * r.reached);
+  // With vertices=fixed the linear mesh's interior vertices are held where they are:
+  // only the nodes the order raising added move.
+  std::vector<bool> held = boundary_nodes(raised);
+  if (fixed_vertices) {
+    const std::vector<bool> vertex = vertex_nodes(raised);
+    for (int i = 0; i < raised.num_nodes(); ++i)
+      if (vertex[i] && !held[i]) {
+        held[i] = true;
+        target.col(i) = raised.x.col(i);
+      }
+  }
+  DeformResult r = deform_mesh(raised, target, held, d);
+  if (!r.complete && (fixed_vertices || d.reach > 0 || d.layers > 0)) {
+    const std::string restricted =
+        std::string(fixed_vertices ? "vertices held, " : "") +
+        (d.layers > 0 ? fmt::format("within {} element layers", d.layers)
+         : d.reach > 0 ? fmt::format("within reach {:g}", d.reach)
+                       : std::string("whole mesh"));
+    ctx.log.info("curve: the solve ({}) kept the mesh valid only up to {:.1f} % of the motion; "
+                 "solving on the whole mesh with every interior node free",
+                 restricted, 100 * r.reached);
     d.reach = 0;
     d.layers = 0;
     r = deform_mesh(raised, target, boundary_nodes(raised), d);
@@ -94,6 +114,9 @@ Stage curve_stage() {
        "load increments (halved where validity needs it); formulations whose terms depend on "
        "the deformation so far (force_q17, heat_*, metric_*, stiff_*) see only the straight "
        "mesh in one increment: give them 4 or more"},
+      {"vertices", "fixed",
+       "fixed: the linear mesh's vertices stay (boundary-layer heights kept exactly), only the "
+       "nodes the order raising adds move; free: every interior node moves (the thesis)"},
       {"layers", "0",
        "0: no effect; k > 0: solve only on the elements within k element layers of the "
        "moving boundary nodes, the rest held still (as Gmsh's Mesh.HighOrderNumLayers; "
@@ -105,12 +128,13 @@ Stage curve_stage() {
       {"corner", "40",
        "without CAD (a .msh): boundary vertices turning more than this (degrees) stay sharp "
        "corners of the rebuilt spline curves"}};
-  // Defaults: E = 1/Ae, nu = 0.49, one increment. Measured on the boundary-layer
-  // meshes of scripts/bench/curving_vs_gmsh.py (plate and NACA-7526, first cell 1e-3
-  // and 1e-4, p = 2-4): worst minJ/maxJ 0.968-0.993, against 0.89-0.95 for E = 1,
-  // nu = 0.4. A nearly incompressible material keeps the thin layer elements' areas,
-  // so the wall's curvature is carried up through the layers instead of squashing
-  // the first one; 1/Ae makes the small elements stiff as well.
+  // Defaults: E = 1/Ae, nu = 0.49, one increment, vertices fixed, reach 2. Measured on
+  // the boundary-layer meshes of scripts/bench/curving_vs_gmsh.py (plate and NACA-7526,
+  // first cell 1e-3 and 1e-4, p = 2-4): worst minJ/maxJ 0.96-0.99, against 0.89-0.95
+  // for E = 1, nu = 0.4 (scripts/bench/README.md). A nearly incompressible material
+  // keeps the thin layer elements' areas, so the wall's curvature is carried up through
+  // the layers instead of squashing the first one; 1/Ae makes the small elements stiff
+  // as well; holding the vertices keeps the linear mesh and shrinks the system.
   for (auto& o : analogy_option_specs("area", "0.49")) options.push_back(std::move(o));
   return {"curve",
           "order p with boundary nodes on the CAD (or on splines rebuilt from a bare .msh), "
