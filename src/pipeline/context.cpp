@@ -9,6 +9,12 @@ Mesh& Context::require_mesh(const std::string& stage) {
   return *mesh;
 }
 
+void Context::require_cad(const std::string& stage) const {
+  if (!has_cad)
+    throw Error("stage '" + stage + "': " + input +
+                " has no CAD geometry to mesh (give a .geo, .step or .brep)");
+}
+
 void Context::set_field(Field f) {
   for (Field& g : fields)
     if (g.name == f.name) {

@@ -19,9 +19,7 @@ const std::map<std::string, int>& algorithms() {
 }
 
 void run(Context& ctx, const Options& opt) {
-  if (!ctx.has_cad)
-    throw Error("stage 'mesh': " + ctx.input + " has no CAD geometry to mesh (give a .geo, " +
-                ".step or .brep)");
+  ctx.require_cad("mesh");
   const std::string algorithm = opt.get_string("algorithm");
   const auto it = algorithms().find(algorithm);
   if (it == algorithms().end())

@@ -171,9 +171,7 @@ Eigen::Matrix2Xd file_seeds(const std::string& path, const SeedList& list, const
 }
 
 void run(Context& ctx, const Options& opt) {
-  if (!ctx.has_cad)
-    throw Error("stage 'voronoi': " + ctx.input + " has no CAD geometry to mesh (give a .geo, " +
-                ".step or .brep)");
+  ctx.require_cad("voronoi");
   const std::string metric_name = opt.get_string("metric");
   const std::string seeds_name = opt.get_string("seeds");
   const std::string engine = opt.get_string("engine");
