@@ -10,8 +10,9 @@ triangle boundary layers made by homesh's layers stage, growth ratio 1.3, first 
 Every variant starts from the same linear mesh, re-created deterministically (open the
 .geo, homesh.mesh(), homesh.layers(...)) so that the model keeps its CAD:
   homesh  : homesh.curve(p=P) with its defaults (E = 1/Ae, nu = 0.49, one load increment,
-            solved within 2 wall-triangle sizes of the wall), the same on the whole mesh,
-            the plain analogy (E = 1, nu = 0.4, 4 increments, whole mesh) and stiff_shear
+            the linear mesh's vertices held, solved within 2 wall-triangle sizes of the wall),
+            the same on the whole mesh, the same with every interior node free, the plain
+            analogy (E = 1, nu = 0.4, 4 increments, nodes free, whole mesh) and stiff_shear
             power 3 in 4 increments;
   gmsh    : gmsh.model.mesh.setOrder(P) (boundary nodes on the CAD) alone, then followed
             by optimize("HighOrderElastic") with Mesh.HighOrderNumLayers 6 and 20,
@@ -43,9 +44,10 @@ RATIO = 1.3
 ORDERS = [2, 3, 4]
 
 HOMESH_METHODS = {
-    "homesh default": dict(),  # E = 1/Ae, nu = 0.49, 1 increment, reach 2
+    "homesh default": dict(),  # E = 1/Ae, nu = 0.49, 1 increment, vertices fixed, reach 2
     "homesh whole mesh": dict(reach=0),
-    "homesh plain": dict(formulation="plain", nu=0.4, increments=4, reach=0),
+    "homesh vertices free": dict(vertices="free"),
+    "homesh plain": dict(formulation="plain", nu=0.4, increments=4, reach=0, vertices="free"),
     "homesh stiff_shear^3": dict(formulation="stiff_shear", power=3, increments=4),
 }
 GMSH_METHODS = {

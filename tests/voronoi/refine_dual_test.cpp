@@ -6,6 +6,18 @@
 
 using namespace homesh;
 
+namespace {
+// 40 random seeds (set `set`) on a coarse 101 x 101 grid of the unit square, a
+// constant anisotropic metric.
+VoronoiProblem coarse_seed_set(unsigned set) {
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, 101, 101);
+  p.seeds = test::uniform_seeds(40, set, 0.02, 0.98);
+  p.metric = MetricField::constant(metric_from_axes(0.3, 1.0, 0.25));
+  return p;
+}
+}  // namespace
+
 TEST_CASE("seeds added at the failing triple points repair the dual", "[voronoi][refine]") {
   // 40 random seeds on a coarse 101 x 101 grid: near-degenerate vertices
   // shorter than a cell break the dual of some sets; a seed at each faulty
@@ -13,10 +25,7 @@ TEST_CASE("seeds added at the failing triple points repair the dual", "[voronoi]
   int failing = 0;
   for (unsigned set = 1; set <= 12; ++set) {
     INFO("seed set " << set);
-    VoronoiProblem p;
-    p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, 101, 101);
-    p.seeds = test::uniform_seeds(40, set, 0.02, 0.98);
-    p.metric = MetricField::constant(metric_from_axes(0.3, 1.0, 0.25));
+    const VoronoiProblem p = coarse_seed_set(set);
     const VoronoiDelaunay first = voronoi_delaunay(p, "fast_marching");
     const RefinedDual r = refine_dual(p, "fast_marching");
     CHECK(r.ok());
@@ -60,10 +69,7 @@ TEST_CASE("no seed is added outside the allowed region or near a segment's diame
   int added = 0, refused = 0;
   for (unsigned set = 1; set <= 12; ++set) {
     INFO("seed set " << set);
-    VoronoiProblem p;
-    p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, 101, 101);
-    p.seeds = test::uniform_seeds(40, set, 0.02, 0.98);
-    p.metric = MetricField::constant(metric_from_axes(0.3, 1.0, 0.25));
+    const VoronoiProblem p = coarse_seed_set(set);
     const Eigen::Matrix2Xd faults = dual_faults(p.seeds, voronoi_delaunay(p, "fast_marching"));
     RefineOptions o;
     for (int f = 0; f < faults.cols(); f += 2) {
