@@ -1,5 +1,6 @@
 #include "pipeline/options.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -56,6 +57,16 @@ bool Options::get_bool(const std::string& key) const {
   if (s == "1" || s == "true" || s == "yes" || s == "on") return true;
   if (s == "0" || s == "false" || s == "no" || s == "off") return false;
   bad(key, "not a boolean (true/false)");
+}
+
+std::string Options::get_choice(const std::string& key,
+                                const std::vector<std::string>& choices) const {
+  const std::string& s = values_.at(key);
+  if (std::find(choices.begin(), choices.end(), s) != choices.end()) return s;
+  std::string expected;
+  for (std::size_t k = 0; k < choices.size(); ++k)
+    expected += (k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + choices[k];
+  bad(key, "expected " + expected);
 }
 
 std::vector<std::string> Options::get_list(const std::string& key) const {

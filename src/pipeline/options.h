@@ -28,6 +28,8 @@ class Options {
   /// An integer in [lo, hi].
   int get_int(const std::string& key, int lo, int hi) const;
   bool get_bool(const std::string& key) const;
+  /// One of `choices` ("expected a or b" otherwise).
+  std::string get_choice(const std::string& key, const std::vector<std::string>& choices) const;
   /// A comma-separated list (empty entries dropped).
   std::vector<std::string> get_list(const std::string& key) const;
 

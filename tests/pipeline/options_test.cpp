@@ -39,6 +39,13 @@ TEST_CASE("options fall back to defaults and reject bad values by name", "[pipel
                       Catch::Contains("not a number"));
   REQUIRE_THROWS_WITH(Options("order", specs, {{"keep", "maybe"}}).get_bool("keep"),
                       Catch::Contains("not a boolean"));
+  const std::vector<OptionSpec> choice = {{"v", "fixed", ""}};
+  REQUIRE(Options("curve", choice, {}).get_choice("v", {"fixed", "free"}) == "fixed");
+  REQUIRE(Options("curve", choice, {{"v", "free"}}).get_choice("v", {"fixed", "free"}) == "free");
+  REQUIRE_THROWS_WITH(Options("curve", choice, {{"v", "x"}}).get_choice("v", {"fixed", "free"}),
+                      Catch::Contains("stage 'curve': option v=x: expected fixed or free"));
+  REQUIRE_THROWS_WITH(Options("curve", choice, {{"v", "x"}}).get_choice("v", {"a", "b", "c"}),
+                      Catch::Contains("expected a, b or c"));
 }
 
 TEST_CASE("the stage registry lists each stage once with documented options", "[pipeline]") {

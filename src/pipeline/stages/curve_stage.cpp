@@ -48,10 +48,7 @@ void run(Context& ctx, const Options& opt) {
   d.params = analogy.params;
   d.solver = analogy.solver;
   d.increments = opt.get_int("increments", 1, 1000);
-  const std::string vertices = opt.get_string("vertices");
-  if (vertices != "fixed" && vertices != "free")
-    throw Error("stage 'curve': vertices = " + vertices + " must be fixed or free");
-  const bool fixed_vertices = vertices == "fixed";
+  const bool fixed_vertices = opt.get_choice("vertices", {"fixed", "free"}) == "fixed";
   d.layers = opt.get_int("layers", 0, 1000);
   d.reach = opt.get_double("reach");
   if (!(d.reach >= 0)) throw Error(fmt::format("stage 'curve': reach = {:g} must be >= 0", d.reach));

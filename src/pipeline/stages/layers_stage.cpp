@@ -23,10 +23,7 @@ void run(Context& ctx, const Options& opt) {
   o.layers = opt.get_int("n", 1, 1000);
   o.first = opt.get_double("first");
   o.ratio = opt.get_double("ratio");
-  const std::string normals = opt.get_string("normals");
-  if (normals != "single" && normals != "multi")
-    throw Error("stage 'layers': option normals=" + normals + ": expected single or multi");
-  o.normals.multi = normals == "multi";
+  o.normals.multi = opt.get_choice("normals", {"single", "multi"}) == "multi";
   o.normals.fan = opt.get_int("fan", 3, 99);
   o.normals.fan_angle = opt.get_double("fan_angle");
   const AnalogyChoice analogy = read_analogy_options(opt, "layers");

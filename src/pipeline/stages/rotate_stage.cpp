@@ -78,9 +78,7 @@ void run(Context& ctx, const Options& opt) {
   r.max_angle = opt.get_double("max");
   if (!(r.max_angle >= 0)) throw Error("stage 'rotate': option max must be >= 0");
   r.substeps = opt.get_int("substeps", 1, 1000);
-  const std::string pose = opt.get_string("pose");
-  if (pose != "current" && pose != "initial")
-    throw Error("stage 'rotate': option pose=" + pose + ": expected current or initial");
+  const std::string pose = opt.get_choice("pose", {"current", "initial"});
   r.total = pose == "initial";
   const AnalogyChoice analogy = read_analogy_options(opt, "rotate");
   r.formulation = analogy.formulation;
