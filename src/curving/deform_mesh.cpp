@@ -59,10 +59,12 @@ std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, do
   if (centre.empty()) return region;
   double cell = 0;
   for (double r : radius) cell += 2 * r / double(radius.size());
+  // Cell (i, j) as a 64-bit key; unsigned, as i and j may be negative.
   auto key = [cell](double x, double y) {
-    return (std::int64_t(std::floor(x / cell)) << 32) ^ (std::int64_t(std::floor(y / cell)) & 0xffffffff);
+    return (std::uint64_t(std::uint32_t(std::int32_t(std::floor(x / cell)))) << 32) |
+           std::uint32_t(std::int32_t(std::floor(y / cell)));
   };
-  std::unordered_map<std::int64_t, std::vector<int>> grid;
+  std::unordered_map<std::uint64_t, std::vector<int>> grid;
   for (int k = 0; k < int(centre.size()); ++k) {
     const Eigen::Vector2d c = centre[k];
     const double r = radius[k];

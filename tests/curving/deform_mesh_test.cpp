@@ -213,6 +213,10 @@ TEST_CASE("reach = r solves within r wall-triangle sizes of the moving wall, thr
     for (int k = 0; k < 3; ++k) reach_out = std::max(reach_out, a.m.x.col(a.m.tri(k, e)).norm());
   CHECK(layers_out < 1.01);
   CHECK(reach_out > 1.2);
+  // The same region with the mesh in the third quadrant (negative grid cells).
+  Mesh turned = a.m;
+  turned.x = -a.m.x;
+  CHECK(reach_region(turned, moving, 2) == region);
 
   DeformOptions opt;
   opt.formulation = "area";
