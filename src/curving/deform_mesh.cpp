@@ -59,22 +59,22 @@ std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, do
   if (centre.empty()) return region;
   double cell = 0;
   for (double r : radius) cell += 2 * r / double(radius.size());
+  auto cell_of = [cell](double v) { return std::int32_t(std::floor(v / cell)); };
   // Cell (i, j) as a 64-bit key; unsigned, as i and j may be negative.
-  auto key = [cell](double x, double y) {
-    return (std::uint64_t(std::uint32_t(std::int32_t(std::floor(x / cell)))) << 32) |
-           std::uint32_t(std::int32_t(std::floor(y / cell)));
+  auto key = [](std::int32_t i, std::int32_t j) {
+    return (std::uint64_t(std::uint32_t(i)) << 32) | std::uint32_t(j);
   };
   std::unordered_map<std::uint64_t, std::vector<int>> grid;
   for (int k = 0; k < int(centre.size()); ++k) {
     const Eigen::Vector2d c = centre[k];
     const double r = radius[k];
-    for (double x = std::floor((c.x() - r) / cell); x <= std::floor((c.x() + r) / cell); ++x)
-      for (double y = std::floor((c.y() - r) / cell); y <= std::floor((c.y() + r) / cell); ++y)
-        grid[key((x + 0.5) * cell, (y + 0.5) * cell)].push_back(k);
+    for (std::int32_t i = cell_of(c.x() - r); i <= cell_of(c.x() + r); ++i)
+      for (std::int32_t j = cell_of(c.y() - r); j <= cell_of(c.y() + r); ++j)
+        grid[key(i, j)].push_back(k);
   }
   auto near = [&](int node) {
     const Eigen::Vector2d x = m.x.col(node);
-    const auto it = grid.find(key(x.x(), x.y()));
+    const auto it = grid.find(key(cell_of(x.x()), cell_of(x.y())));
     if (it == grid.end()) return false;
     for (int k : it->second)
       if ((x - centre[k]).norm() <= radius[k]) return true;
