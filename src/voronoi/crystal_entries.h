@@ -41,8 +41,11 @@ class CrystalEntries {
   int head(int x) const { return slot_[x].label < 0 ? -1 : x; }
   /// The entry of crystal c at node x, or -1.
   int find(int x, int c) const {
-    for (int e = head(x); e >= 0; e = (*this)[e].next)
-      if ((*this)[e].label == c) return e;
+    const CrystalEntry& first = slot_[x];
+    if (first.label == c) return x;
+    if (first.label < 0) return -1;
+    for (int e = first.next; e >= 0; e = extra_[e - size()].next)
+      if (extra_[e - size()].label == c) return e;
     return -1;
   }
   /// Whether node x holds an entry of time below t.

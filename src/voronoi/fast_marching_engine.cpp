@@ -22,9 +22,13 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Smallest semi-axis, in cells, of the block of exact times round a seed.
 constexpr double kSeedBlockCells = 3.0;
-// In a varying metric field a time is measured straight from a source only
-// within this many cells (the metric is taken as the mean of the two ends').
+// In a varying metric field a time is measured straight from a source (the
+// metric taken as the mean of the two ends') within this many cells, and
+// farther where the metric is the same at both ends and at the middle, to a
+// relative difference of kSameMetric cells over the segment's length in cells
+// (a time error of about kSameMetric / 2 cells).
 constexpr double kTrustCells = 8.0;
+constexpr double kSameMetric = 0.2;
 // The sweep's schedule (class Sweep): slabs per window, and grid nodes per
 // block of crystals (about their area; their entries then fit a core's
 // cache, ~1 MB).
@@ -63,7 +67,10 @@ class Sweep {
       : field_(field),
         original_(std::move(original)),
         seeds_(2, seeds.cols()),
+        seed_grid_(2, seeds.cols()),
         seed_metric_(M.size()),
+        seed_stencil_(M.size()),
+        seed_clearance_(M.size()),
         entries_(field.grid().node_count()),
         winner_(field.grid().node_count(), -1),
         winner_time_(field.grid().node_count(), kInf),
@@ -71,8 +78,12 @@ class Sweep {
         slab_(slab_width(field.grid(), M)),
         block_(std::max<long>(1, kBlockNodes * seeds.cols() / field.grid().node_count())) {
     for (int c = 0; c < seeds.cols(); ++c) {
+      const CartesianGrid& g = field.grid();
       seeds_.col(c) = seeds.col(original_[c]);
+      seed_grid_.col(c) = (seeds_.col(c) - g.origin).cwiseQuotient(Eigen::Vector2d(g.dx, g.dy));
       seed_metric_[c] = M[original_[c]];
+      seed_stencil_[c] = lattice_stencil(M[original_[c]], g.dx, g.dy);
+      seed_clearance_[c] = -field.domain_at(seeds_.col(c));
     }
   }
 
@@ -100,7 +111,10 @@ class Sweep {
         const int x = g.index(i, j);
         const Eigen::Vector2d v = g.point(i, j) - p;
         const double t = std::sqrt(v.dot(M * v));
-        if (t > R || !field_.inside(x) || !field_.visible(p, g.point(i, j))) continue;
+        if (t > R || !field_.inside(x) ||
+            !field_.segment_clear(p, seed_clearance_[s], g.point(i, j), field_.clearance(x),
+                                  v.norm()))
+          continue;
         ++placed;
         if (entries_.any_below(x, t)) continue;
         const int e = entries_.add(x, s);
@@ -168,9 +182,9 @@ class Sweep {
           if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= g.nx || b >= g.ny) continue;
           const int z = g.index(a, b);
           if (winner_[z] >= 0 || !field_.inside(z)) continue;
-          const Eigen::Vector2d v(di * g.dx, dj * g.dy);
           const double t =
-              from_time + std::sqrt(v.dot(field_.node_metric(original_[from], z) * v));
+              from_time +
+              std::sqrt(field_.stencil(original_[from], z).norm2(Eigen::Vector2d(di, dj)));
           int e = entries_.find(z, from);
           if (e < 0) e = entries_.add(z, from);
           if (assign(e, t, z, t)) heap.push({t, e});
@@ -232,7 +246,7 @@ class Sweep {
         winner_time_[x] = t;
         en.hop = 0;
       }
-      if (en.hop < kOwnTimeBand) spread(e);
+      if (en.hop < kOwnTimeBand) (this->*spread_)(e);
     }
     return true;
   }
@@ -253,33 +267,62 @@ class Sweep {
     return source < 0 ? Eigen::Vector2d(seeds_.col(-1 - source))
                       : g.point(source % g.nx, source / g.nx);
   }
-  // The time of crystal s at node x measured straight from the source of
-  // entry `from`: its time plus the length of the segment in the crystal's
-  // metric (in a varying field, the mean of the metrics at its ends, and only
-  // within kTrustCells cells). +infinity if the segment leaves the domain.
-  double from_source(int s, int x, const Eigen::Vector2d& px, const Entry& from) const {
+  // The stencil of crystal s at node x.
+  template <bool kVarying>
+  const LatticeStencil& stencil(int s, int x) const {
+    return kVarying ? field_.node_stencil(x) : field_.crystal_stencil(original_[s]);
+  }
+  // The time of crystal s at node x = (ix, jx), of stencil st, measured
+  // straight from `source` (a node, or -1 - c for the seed of crystal c)
+  // reached at source_time: that time plus the length of the segment in the
+  // crystal's metric (in a varying field, the mean of the metrics at its
+  // ends, within kTrustCells cells or where the metric is the same along it).
+  // +infinity if the segment leaves the domain. Lengths in grid units through
+  // the stencils' Gram values.
+  template <bool kVarying, bool kDomain>
+  double from_source(int s, int x, int ix, int jx, const LatticeStencil& st, int source,
+                     double source_time) const {
     const CartesianGrid& g = field_.grid();
-    const Eigen::Vector2d v = px - point(from.source);
-    const Eigen::Matrix2d& Mx = field_.node_metric(original_[s], x);
-    double length2 = v.dot(Mx * v);
-    if (field_.varying()) {
-      if (v.norm() > kTrustCells * g.ds()) return kInf;
-      const Eigen::Matrix2d& Mo =
-          from.source < 0 ? seed_metric_[s] : field_.node_metric(original_[s], from.source);
-      length2 = 0.5 * (length2 + v.dot(Mo * v));
+    const Eigen::Vector2d from = source < 0 ? Eigen::Vector2d(seed_grid_.col(-1 - source))
+                                            : Eigen::Vector2d(source % g.nx, source / g.nx);
+    const Eigen::Vector2d v = Eigen::Vector2d(ix, jx) - from;
+    const double euclid2 = v.x() * v.x() * g.dx * g.dx + v.y() * v.y() * g.dy * g.dy;
+    double length2 = st.norm2(v);
+    if constexpr (kVarying) {
+      const LatticeStencil& so = source < 0 ? seed_stencil_[s] : field_.node_stencil(source);
+      const double other2 = so.norm2(v);
+      if (euclid2 > trust2_) {
+        const double tolerance = kSameMetric * g.ds() / std::sqrt(euclid2) * length2;
+        const Eigen::Vector2d m = from + 0.5 * v;
+        const int mid = g.index(static_cast<int>(m.x() + 0.5), static_cast<int>(m.y() + 0.5));
+        if (std::abs(other2 - length2) > tolerance ||
+            std::abs(field_.node_stencil(mid).norm2(v) - length2) > tolerance)
+          return kInf;
+      }
+      length2 = 0.5 * (length2 + other2);
     }
-    if (!field_.visible(point(from.source), px)) return kInf;
-    return from.source_time + std::sqrt(length2);
+    if constexpr (kDomain) {
+      const double clear = source < 0 ? seed_clearance_[-1 - source] : field_.clearance(source);
+      if (!field_.segment_clear(point(source), clear, g.point(ix, jx), field_.clearance(x),
+                                std::sqrt(euclid2)))
+        return kInf;
+    }
+    return source_time + std::sqrt(length2);
   }
   // The accepted entry of crystal s at node x = (ix, jx) + o, if it is a node
   // the update from x may use, else -1.
-  int upwind(int s, int x, int ix, int jx, const Eigen::Vector2i& o, double euclid) const {
+  template <bool kDomain>
+  int upwind(int s, int x, int ix, int jx, const Eigen::Vector2i& o) const {
     const CartesianGrid& g = field_.grid();
     const int i = ix + o.x(), j = jx + o.y();
-    if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) return -1;
+    if (static_cast<unsigned>(i) >= static_cast<unsigned>(g.nx) ||
+        static_cast<unsigned>(j) >= static_cast<unsigned>(g.ny))
+      return -1;
     const int z = g.index(i, j);
     const int e = entries_.find(z, s);
-    if (e < 0 || !entries_[e].accepted() || !field_.passable(x, z, euclid)) return -1;
+    if (e < 0 || !entries_[e].accepted()) return -1;
+    if constexpr (kDomain)
+      if (!field_.passable(x, z)) return -1;
     return e;
   }
   // Entry e (crystal s at node y) was accepted: update the nodes whose
@@ -289,52 +332,72 @@ class Sweep {
   // Shortcuts with the same result, since a crystal accepts its entries in
   // increasing time and every update of x from y is at least y's time a:
   // the time from the source x already holds is skipped (it gave at most x's
-  // time, and a new one could only be max(that, a), not less); in a metric
-  // constant per crystal without a domain (straight_) every source is the
-  // seed and every time the exact |x - p|_M, which the Hopf-Lax update never
-  // undercuts (the linear interpolation of a convex function overestimates
-  // it): the update is that time, computed once per entry.
+  // time, and a new one could only be max(that, a), not less), and so is a
+  // source met twice. Also skipped, a little apart from the result in a
+  // metric field: an entry that is its own source (one stencil step away,
+  // an end of the Hopf-Lax segment, the one-sided update already). In a
+  // metric constant per crystal without a domain (kStraight) every source is
+  // the seed and every time the exact |x - p|_M, which the Hopf-Lax update
+  // never undercuts (the linear interpolation of a convex function
+  // overestimates it): the update is that time, computed once per entry.
+  // One instance per kind of problem (a metric field or not, a domain or
+  // not), without the tests the others need.
+  template <bool kVarying, bool kDomain>
   void spread(int e) {
+    constexpr bool kStraight = !kVarying && !kDomain;
+    static constexpr int kPrev[6] = {5, 0, 1, 2, 3, 4}, kNext[6] = {1, 2, 3, 4, 5, 0};
     const CartesianGrid& g = field_.grid();
+    // Copies: adding entries below may move entry e.
     const int s = entries_[e].label, y = entries_.node(e);
     const double a = entries_[e].time;
     const int hop = entries_[e].hop + 1;
+    const int e_source = entries_[e].source;
+    const double e_source_time = entries_[e].source_time;
     field_.for_each_reverse(original_[s], y, [&](int x, int k) {
-      if (!field_.inside(x)) return;
+      if constexpr (kDomain)
+        if (!field_.inside(x)) return;
       const int w = winner_[x];
       if (w >= 0 && (w == s || hop > kOwnTimeBand)) return;
       int target = entries_.find(x, s);
       if (target >= 0 && entries_[target].accepted()) return;
-      if (field_.has_domain() && !field_.passable(x, y, field_.euclid(original_[s], x, k))) return;
+      if constexpr (kDomain)
+        if (!field_.passable(x, y)) return;
       if (target < 0) target = entries_.add(x, s);
-      entries_[target].hop = static_cast<std::uint8_t>(std::min<int>(entries_[target].hop, hop));
-      if (straight_ && entries_[target].time < kInf) return;
+      Entry& to = entries_[target];  // no entry is added below
+      to.hop = static_cast<std::uint8_t>(std::min<int>(to.hop, hop));
       const int ix = x % g.nx, jx = x / g.nx;
-      const Eigen::Vector2d px = g.point(ix, jx);
-      if (straight_) {
-        const Eigen::Vector2d v = px - seeds_.col(s);
-        lower(target, std::max(std::sqrt(v.dot(seed_metric_[s] * v)), a), -1 - s, 0.0);
+      if constexpr (kStraight) {
+        if (to.time < kInf) return;
+        const Eigen::Vector2d v = Eigen::Vector2d(ix, jx) - seed_grid_.col(s);
+        lower(target, std::max(std::sqrt(seed_stencil_[s].norm2(v)), a), -1 - s, 0.0);
         return;
       }
-      const StencilField::Local l = field_.local(original_[s], x, k);
-      double t = a + l.length;
-      const int before = upwind(s, x, ix, jx, l.prev, l.euclid_prev);
-      if (before >= 0) t = std::min(t, hopf_lax(l.before, entries_[before].time, a));
-      const int after = upwind(s, x, ix, jx, l.next, l.euclid_next);
-      if (after >= 0) t = std::min(t, hopf_lax(l.after, a, entries_[after].time));
+      const LatticeStencil& st = stencil<kVarying>(s, x);
+      const int kp = kPrev[k], kn = kNext[k];
+      double t = a + st.length(k);
+      const int before = upwind<kDomain>(s, x, ix, jx, st.offset(kp));
+      if (before >= 0) t = std::min(t, hopf_lax(st.sector(kp), entries_[before].time, a));
+      const int after = upwind<kDomain>(s, x, ix, jx, st.offset(kn));
+      if (after >= 0) t = std::min(t, hopf_lax(st.sector(k), a, entries_[after].time));
       int source = x;
       double source_time = t, best = kInf;
       // (In a varying field a seed block's time, in the seed's metric, is not
       // from_source's, in the mean of the two ends' metrics: not skipped.)
-      const int known =
-          field_.varying() && entries_[target].source < 0 ? x : entries_[target].source;
-      for (const int u : {e, before, after}) {
-        if (u < 0 || entries_[u].source == known ||
-            (u != e && entries_[u].source == entries_[e].source))
-          continue;
-        const double ts = from_source(s, x, px, entries_[u]);
-        if (ts < best)
-          best = ts, source = entries_[u].source, source_time = entries_[u].source_time;
+      const int known = kVarying && to.source < 0 ? x : to.source;
+      const auto consider = [&](int from, double from_time) {
+        if (from == known) return;
+        const double ts = from_source<kVarying, kDomain>(s, x, ix, jx, st, from, from_time);
+        if (ts < best) best = ts, source = from, source_time = from_time;
+      };
+      if (e_source != y) consider(e_source, e_source_time);
+      const int before_source = before >= 0 ? entries_[before].source : e_source;
+      if (before_source != e_source && before_source != entries_.node(before))
+        consider(before_source, entries_[before].source_time);
+      if (after >= 0) {
+        const int after_source = entries_[after].source;
+        if (after_source != e_source && after_source != before_source &&
+            after_source != entries_.node(after))
+          consider(after_source, entries_[after].source_time);
       }
       if (best <= t)
         t = std::max(best, a);
@@ -343,12 +406,22 @@ class Sweep {
       lower(target, t, source, source_time);
     });
   }
+  using Spread = void (Sweep::*)(int);
+  static Spread spread_for(const StencilField& field) {
+    if (field.varying())
+      return field.has_domain() ? &Sweep::spread<true, true> : &Sweep::spread<true, false>;
+    return field.has_domain() ? &Sweep::spread<false, true> : &Sweep::spread<false, false>;
+  }
 
   const StencilField& field_;
-  const bool straight_ = !field_.varying() && !field_.has_domain();
+  const Spread spread_ = spread_for(field_);
+  const double trust2_ = std::pow(kTrustCells * field_.grid().ds(), 2);
   std::vector<int> original_;
-  Eigen::Matrix2Xd seeds_;  ///< in the sweep's order, as the next two
+  Eigen::Matrix2Xd seeds_;  ///< in the sweep's order, as the next five
+  Eigen::Matrix2Xd seed_grid_;  ///< in grid units from the origin
   std::vector<Eigen::Matrix2d> seed_metric_;
+  std::vector<LatticeStencil> seed_stencil_;  ///< the seed metric's, for its Gram matrix
+  std::vector<double> seed_clearance_;        ///< minus the domain's level set at the seed
   CrystalEntries entries_;
   // Per node, the crystal of least accepted time so far (-1: none) and that
   // time, apart: the updates read only the first.

@@ -27,8 +27,11 @@
 // the Euclidean distance); the first-order update alone shifts interfaces by
 // up to a few cells where two fronts meet nearly parallel (measured at 1:10
 // anisotropy: 0.5 % of the nodes mislabelled, up to 6 cells from the exact
-// interface). In a varying metric field a source is trusted only within
-// kTrustCells cells. Around each seed the times are exact in the metric ball
+// interface). In a varying metric field a source is trusted within
+// kTrustCells cells, and beyond where the metric is the same at both ends and
+// at the middle of the segment (so a field that is constant in a region is
+// exact there too; a test holds the full update to the exact diagram at 1:1,
+// 1:10 and 1:100, as the constant-metric shortcut). Around each seed the times are exact in the metric ball
 // of smallest semi-axis 3 ds (or VoronoiOptions::seed_radius).
 //
 // Differences from the level-set engine: a metric field enters as the

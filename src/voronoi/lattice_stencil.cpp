@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
 #include <utility>
+
+#include "core/error.h"
 
 namespace homesh {
 namespace {
@@ -20,7 +25,9 @@ Superbase obtuse_superbase(const Eigen::Matrix2d& G) {
   Eigen::Vector2i b1(1, 0), b2(0, 1);
   for (;;) {
     if (dot(G, b1, b1) > dot(G, b2, b2)) std::swap(b1, b2);
-    const long m = std::lround(dot(G, b1, b2) / dot(G, b1, b1));
+    // Rounded half away from zero (std::lround, without the library call).
+    const double q = dot(G, b1, b2) / dot(G, b1, b1);
+    const long m = static_cast<long>(q < 0.0 ? q - 0.5 : q + 0.5);
     if (m == 0) break;
     b2 -= static_cast<int>(m) * b1;
     if (dot(G, b2, b2) >= dot(G, b1, b1)) break;
@@ -32,29 +39,18 @@ Superbase obtuse_superbase(const Eigen::Matrix2d& G) {
   return {b1, b2};
 }
 
-SectorConstants sector_constants(const Eigen::Matrix2d& M, const Eigen::Vector2d& U,
-                                 const Eigen::Vector2d& V) {
-  const Eigen::Vector2d W = V - U;
-  SectorConstants s;
-  s.A = U.dot(M * U);
-  s.B = U.dot(M * W);
-  s.C = W.dot(M * W);
-  s.det = s.A * s.C - s.B * s.B;
-  return s;
-}
-
 LatticeStencil lattice_stencil(const Eigen::Matrix2d& M, double dx, double dy) {
   const Eigen::Matrix2d scale = Eigen::Vector2d(dx, dy).asDiagonal();
-  const Superbase b = obtuse_superbase(scale * M * scale);
+  const Eigen::Matrix2d G = scale * M * scale;
+  const Superbase b = obtuse_superbase(G);
+  const int reach = std::max(b.e1.cwiseAbs().maxCoeff(), b.e2.cwiseAbs().maxCoeff());
+  if (reach > std::numeric_limits<std::int16_t>::max())
+    throw Error("voronoi: the metric is too anisotropic for the grid (a stencil offset of " +
+                std::to_string(reach) + " cells)");
   LatticeStencil st;
-  for (int k = 0; k < 6; ++k) {
-    st.offset[k] = hexagon_offset(b, k);
-    st.vec[k] = scale * st.offset[k].cast<double>();
-    st.length[k] = std::sqrt(st.vec[k].dot(M * st.vec[k]));
-    st.euclid[k] = st.vec[k].norm();
-    st.max_length = std::max(st.max_length, st.length[k]);
-  }
-  for (int k = 0; k < 6; ++k) st.sector[k] = sector_constants(M, st.vec[k], st.vec[(k + 1) % 6]);
+  st.g11 = dot(G, b.e1, b.e1), st.g12 = dot(G, b.e1, b.e2), st.g22 = dot(G, b.e2, b.e2);
+  st.e[0] = static_cast<std::int16_t>(b.e1.x()), st.e[1] = static_cast<std::int16_t>(b.e1.y());
+  st.e[2] = static_cast<std::int16_t>(b.e2.x()), st.e[3] = static_cast<std::int16_t>(b.e2.y());
   return st;
 }
 

@@ -15,8 +15,8 @@
 // order as in Dijkstra's algorithm, at any anisotropy. The offsets grow like
 // the anisotropy ratio in the worst case; the number of neighbours stays 6.
 #include <Eigen/Core>
-#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace homesh {
@@ -39,14 +39,11 @@ inline Eigen::Vector2i hexagon_offset(const Superbase& b, int k) {
 }
 
 /// What the update needs of the sector between hexagon offsets k and k + 1
-/// (physical vectors U = vec[k], V = vec[k + 1], W = V - U), all in M:
+/// (vectors U = offset k, V = offset k + 1, W = V - U), all in the metric:
 /// A = |U|^2, B = <U, W>, C = |W|^2, det = A C - B^2.
 struct SectorConstants {
   double A = 0, B = 0, C = 0, det = 0;
 };
-
-SectorConstants sector_constants(const Eigen::Matrix2d& M, const Eigen::Vector2d& U,
-                                 const Eigen::Vector2d& V);
 
 /// The Hopf-Lax update of a node x from the segment [x + U, x + V] on which
 /// the arrival time is interpolated linearly between a (at x + U) and b:
@@ -67,18 +64,63 @@ inline double hopf_lax(const SectorConstants& s, double a, double b) {
   return r + a + lambda * d;
 }
 
-/// The hexagon of one metric on a grid of steps dx, dy, with its lengths and
-/// sector constants.
-struct LatticeStencil {
-  std::array<Eigen::Vector2i, 6> offset;  ///< grid offsets, counter-clockwise
-  std::array<Eigen::Vector2d, 6> vec;     ///< physical vectors (i dx, j dy)
-  std::array<double, 6> length{};         ///< |vec[k]|_M
-  std::array<double, 6> euclid{};         ///< |vec[k]|
-  std::array<SectorConstants, 6> sector;  ///< between vec[k] and vec[(k + 1) % 6]
-  double max_length = 0.0;                ///< largest length
+/// The FM-LBR stencil of one metric M on a grid of steps dx, dy, in grid
+/// units: lengths are those of the physical vectors (i dx, j dy) of grid
+/// offsets (i, j) in M. Kept as the superbase and its Gram values in M,
+/// g11 = |e1|^2, g12 = <e1, e2>, g22 = |e2|^2: every sector's constants are
+/// sums of them (det(e1, e2) = 1 makes det = g11 g22 - g12^2 in all six),
+/// and the length of any grid vector v follows from its coordinates in the
+/// superbase, c = [e1 e2]^-1 v (an integer inverse). 32 bytes, two to a
+/// cache line: the fast-marching engine keeps one per node in a metric field.
+struct alignas(32) LatticeStencil {
+  double g11 = 0, g12 = 0, g22 = 0;  ///< Gram values of the superbase
+  std::int16_t e[4] = {0, 0, 0, 0};  ///< the superbase: e1 = (e[0], e[1]), e2 = (e[2], e[3])
+
+  Superbase base() const { return {{e[0], e[1]}, {e[2], e[3]}}; }
+  /// Offset k (0..5, counter-clockwise).
+  Eigen::Vector2i offset(int k) const { return hexagon_offset(base(), k); }
+  /// |offset k|^2 in the metric: offsets k and k + 3 are opposite, and
+  /// offset 1 is e1 + e2.
+  double gram(int k) const {
+    switch (k % 3) {
+      case 0:
+        return g11;
+      case 1:
+        return g11 + g22 + 2.0 * g12;
+      default:
+        return g22;
+    }
+  }
+  /// |offset k| in the metric.
+  double length(int k) const { return std::sqrt(gram(k)); }
+  /// |v|^2 in the metric, for v in grid units.
+  double norm2(const Eigen::Vector2d& v) const {
+    const double c1 = e[3] * v.x() - e[2] * v.y(), c2 = e[0] * v.y() - e[1] * v.x();
+    return g11 * c1 * c1 + 2.0 * g12 * c1 * c2 + g22 * c2 * c2;
+  }
+  /// The constants of the sector between offsets k and k + 1 (mod 6):
+  /// (U, W) = (e1, e2), (e1 + e2, -e1), (e2, -e1 - e2) for k = 0, 1, 2, and
+  /// their opposites (the same constants) for k + 3.
+  SectorConstants sector(int k) const {
+    SectorConstants s;
+    switch (k % 3) {
+      case 0:
+        s.A = g11, s.B = g12, s.C = g22;
+        break;
+      case 1:
+        s.A = g11 + g22 + 2.0 * g12, s.B = -(g11 + g12), s.C = g11;
+        break;
+      default:
+        s.A = g22, s.B = -(g12 + g22), s.C = g11 + g22 + 2.0 * g12;
+    }
+    s.det = g11 * g22 - g12 * g12;
+    return s;
+  }
 };
 
-/// The FM-LBR stencil of the SPD metric M on a grid of steps dx, dy.
+/// The FM-LBR stencil of the SPD metric M on a grid of steps dx, dy; throws
+/// homesh::Error if an offset does not fit 16 bits (anisotropy beyond ~10^4
+/// in grid cells).
 LatticeStencil lattice_stencil(const Eigen::Matrix2d& M, double dx, double dy);
 
 }  // namespace homesh

@@ -33,69 +33,68 @@ StencilField::StencilField(const VoronoiProblem& problem)
     shared_.push_back(lattice_stencil(metric_.metric(0), g.dx, g.dy));
     return;
   }
-  const Eigen::Matrix2d scale = Eigen::Vector2d(g.dx, g.dy).asDiagonal();
   node_.resize(n);
   rev_start_.assign(n + 1, 0);
   for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const int x = g.index(i, j);
-      node_[x].M = metric_.metric_at(g.point(i, j));
-      node_[x].base = obtuse_superbase(scale * node_[x].M * scale);
-    }
-  // Reverse stencils: count, then fill, by the node each offset reaches.
-  const auto reach = [&](int x, int k) {
-    const Eigen::Vector2i o = offset(x, k);
-    const int i = x % g.nx + o.x(), j = x / g.nx + o.y();
-    return (i >= 0 && j >= 0 && i < g.nx && j < g.ny) ? g.index(i, j) : -1;
+    for (int i = 0; i < g.nx; ++i)
+      node_[g.index(i, j)] = lattice_stencil(metric_.metric_at(g.point(i, j)), g.dx, g.dy);
+  // Reverse stencils. Node y is regular if every node reaching it has y's
+  // superbase (then x = y - offset_y(k) reaches it at offset k) and every
+  // such candidate in the grid does: its reverse stencil is its own hexagon
+  // reflected. Only the others get a list (CSR, by the node reached).
+  const auto for_each_reach = [&](auto&& f) {
+    for (int j = 0, x = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i, ++x) {
+        const Superbase b = node_[x].base();
+        const Eigen::Vector2i o[6] = {b.e1, b.e1 + b.e2, b.e2, -b.e1, -b.e1 - b.e2, -b.e2};
+        for (int k = 0; k < 6; ++k) {
+          const int a = i + o[k].x(), c = j + o[k].y();
+          if (a >= 0 && c >= 0 && a < g.nx && c < g.ny) f(x, k, g.index(a, c));
+        }
+      }
   };
-  for (int x = 0; x < n; ++x)
-    for (int k = 0; k < 6; ++k)
-      if (const int y = reach(x, k); y >= 0) ++rev_start_[y + 1];
-  for (int y = 0; y < n; ++y) rev_start_[y + 1] += rev_start_[y];
+  const auto same_base = [&](int x, int y) {
+    return std::equal(node_[x].e, node_[x].e + 4, node_[y].e);
+  };
+  irregular_.assign(n, 0);
+  std::vector<int> reached(n, 0);
+  for_each_reach([&](int x, int, int y) {
+    ++reached[y];
+    if (!same_base(x, y)) irregular_[y] = 1;
+  });
+  for (int j = 0, y = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i, ++y) {
+      if (irregular_[y]) continue;
+      int candidates = 0;
+      for (int k = 0; k < 6; ++k) {
+        const Eigen::Vector2i o = node_[y].offset(k);
+        const int a = i - o.x(), c = j - o.y();
+        candidates += a >= 0 && c >= 0 && a < g.nx && c < g.ny;
+      }
+      irregular_[y] = reached[y] != candidates;
+    }
+  for (int y = 0; y < n; ++y) rev_start_[y + 1] = rev_start_[y] + (irregular_[y] ? reached[y] : 0);
   rev_.resize(rev_start_[n]);
   std::vector<int> fill(rev_start_.begin(), rev_start_.end() - 1);
-  for (int x = 0; x < n; ++x)
-    for (int k = 0; k < 6; ++k)
-      if (const int y = reach(x, k); y >= 0) rev_[fill[y]++] = x * 8 + k;
-}
-
-StencilField::Local StencilField::local(int s, int x, int k) const {
-  const int kp = (k + 5) % 6, kn = (k + 1) % 6;
-  Local out;
-  if (rev_start_.empty()) {
-    const LatticeStencil& st = shared_[shared_.size() == 1 ? 0 : s];
-    out.prev = st.offset[kp];
-    out.next = st.offset[kn];
-    out.length = st.length[k];
-    out.euclid_prev = st.euclid[kp];
-    out.euclid_next = st.euclid[kn];
-    out.before = st.sector[kp];
-    out.after = st.sector[k];
-    return out;
-  }
-  const Eigen::Vector2d h(grid_.dx, grid_.dy);
-  const Eigen::Matrix2d& M = node_[x].M;
-  out.prev = offset(x, kp);
-  out.next = offset(x, kn);
-  const Eigen::Vector2d U = offset(x, k).cast<double>().cwiseProduct(h);
-  const Eigen::Vector2d P = out.prev.cast<double>().cwiseProduct(h);
-  const Eigen::Vector2d N = out.next.cast<double>().cwiseProduct(h);
-  out.length = std::sqrt(U.dot(M * U));
-  out.euclid_prev = P.norm();
-  out.euclid_next = N.norm();
-  out.before = sector_constants(M, P, U);
-  out.after = sector_constants(M, U, N);
-  return out;
+  for_each_reach([&](int x, int k, int y) {
+    if (irregular_[y]) rev_[fill[y]++] = x * 8 + k;
+  });
 }
 
 double StencilField::domain_at(const Eigen::Vector2d& p) const {
   return has_domain() ? bilinear_at(grid_, domain_, p) : 0.0;
 }
 
-bool StencilField::passable(int x, int z, double euclid) const {
-  if (!has_domain() || -domain_(x) - domain_(z) >= euclid) return true;
+bool StencilField::passable(int x, int z) const {
+  if (!has_domain()) return true;
   const CartesianGrid& g = grid_;
-  return visible(g.point(x % g.nx, x / g.nx), g.point(z % g.nx, z / g.nx));
+  const Eigen::Vector2d p = g.point(x % g.nx, x / g.nx), q = g.point(z % g.nx, z / g.nx);
+  return segment_clear(p, clearance(x), q, clearance(z), (q - p).norm());
+}
+
+bool StencilField::segment_clear(const Eigen::Vector2d& p, double cp, const Eigen::Vector2d& q,
+                                 double cq, double length) const {
+  return cp + cq >= length || visible(p, q);
 }
 
 bool StencilField::visible(const Eigen::Vector2d& p, const Eigen::Vector2d& q) const {

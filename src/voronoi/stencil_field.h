@@ -1,8 +1,9 @@
 #pragma once
 // The fast-marching engine's view of a VoronoiProblem: the FM-LBR stencil
-// (lattice_stencil.h) each crystal uses at each grid node, the nodes whose
-// stencil reaches a given node (the ones to update when it is accepted), and
-// whether a straight step between two points stays inside the domain.
+// (lattice_stencil.h, in grid units) each crystal uses at each grid node, the
+// nodes whose stencil reaches a given node (the ones to update when it is
+// accepted), and whether a straight step between two points stays inside the
+// domain.
 //
 // Three cases: one metric everywhere (one stencil), a constant metric per
 // crystal (VoronoiProblem::seed_metrics: one stencil per crystal), or a metric
@@ -31,15 +32,16 @@ class StencilField {
   /// domain <= 0 (or no domain): a node crystals may enter.
   bool inside(int node) const { return inside_.empty() || inside_[node] != 0; }
 
-  /// What the update of node x for crystal s from its hexagon offset k needs:
-  /// offsets k - 1 and k + 1, the lengths, the sectors (k - 1, k) and (k, k + 1).
-  struct Local {
-    Eigen::Vector2i prev, next;
-    double length = 0.0;  ///< |offset k|_M
-    double euclid_prev = 0.0, euclid_next = 0.0;
-    SectorConstants before, after;
-  };
-  Local local(int s, int x, int k) const;
+  /// The stencil crystal s uses at node x.
+  const LatticeStencil& stencil(int s, int x) const {
+    return varying() ? node_stencil(x) : crystal_stencil(s);
+  }
+  /// In a metric field (varying()): the stencil at node x.
+  const LatticeStencil& node_stencil(int x) const { return node_[x]; }
+  /// Otherwise: the stencil of crystal s everywhere.
+  const LatticeStencil& crystal_stencil(int s) const {
+    return shared_[shared_.size() == 1 ? 0 : s];
+  }
 
   /// Calls f(x, k) for every node x whose stencil (for crystal s) has y at
   /// its hexagon offset k.
@@ -49,24 +51,38 @@ class StencilField {
       const LatticeStencil& st = shared_[shared_.size() == 1 ? 0 : s];
       const int iy = y % grid_.nx, jy = y / grid_.nx;
       for (int k = 0; k < 6; ++k) {
-        const int i = iy - st.offset[k].x(), j = jy - st.offset[k].y();
+        const Eigen::Vector2i o = st.offset(k);
+        const int i = iy - o.x(), j = jy - o.y();
         if (i >= 0 && j >= 0 && i < grid_.nx && j < grid_.ny) f(grid_.index(i, j), k);
       }
       return;
     }
-    for (int r = rev_start_[y]; r < rev_start_[y + 1]; ++r) f(rev_[r] >> 3, rev_[r] & 7);
+    if (irregular_[y]) {
+      for (int r = rev_start_[y]; r < rev_start_[y + 1]; ++r) f(rev_[r] >> 3, rev_[r] & 7);
+      return;
+    }
+    // Where the stencils round y are y's own, its reverse stencil is its
+    // hexagon reflected: no reverse list to load.
+    const LatticeStencil& st = node_[y];
+    const int iy = y % grid_.nx, jy = y / grid_.nx;
+    for (int k = 0; k < 6; ++k) {
+      const Eigen::Vector2i o = st.offset(k);
+      const int i = iy - o.x(), j = jy - o.y();
+      if (i >= 0 && j >= 0 && i < grid_.nx && j < grid_.ny) f(grid_.index(i, j), k);
+    }
   }
 
-  /// Euclidean length of hexagon offset k of crystal s at node x.
-  double euclid(int s, int x, int k) const {
-    if (rev_start_.empty()) return shared_[shared_.size() == 1 ? 0 : s].euclid[k];
-    return offset(x, k).cast<double>().cwiseProduct(Eigen::Vector2d(grid_.dx, grid_.dy)).norm();
-  }
-
-  /// Whether the segment between nodes x and z (Euclidean length euclid)
-  /// stays in the domain: both ends are clear of the boundary by the sum of
-  /// their distances to it, or visible(x, z).
-  bool passable(int x, int z, double euclid) const;
+  /// The domain's level set at node x (0 without a domain): minus the
+  /// distance to the boundary inside, up to the band it was computed in.
+  double clearance(int x) const { return has_domain() ? -domain_(x) : kFar; }
+  /// Whether the segment between nodes x and z stays in the domain.
+  bool passable(int x, int z) const;
+  /// Whether the segment pq, of Euclidean length `length`, stays in the
+  /// domain: the clearances cp and cq of its ends add up to its length (the
+  /// level set is a distance, so the discs of those radii hold the segment),
+  /// or visible(p, q).
+  bool segment_clear(const Eigen::Vector2d& p, double cp, const Eigen::Vector2d& q, double cq,
+                     double length) const;
   /// Whether the segment pq stays in the domain, by sphere tracing the
   /// domain's distance (bilinear between nodes) from p to q in steps of at
   /// least ds / 2; the first and last ds are not tested (a seed may sit on
@@ -76,14 +92,9 @@ class StencilField {
   double domain_at(const Eigen::Vector2d& p) const;
   /// The metric crystal s grows in at point p.
   Eigen::Matrix2d metric(int s, const Eigen::Vector2d& p) const;
-  /// The metric crystal s grows in at node x.
-  const Eigen::Matrix2d& node_metric(int s, int x) const {
-    if (varying()) return node_[x].M;
-    return seed_metrics_.empty() ? metric_.metric(0) : seed_metrics_[s];
-  }
 
  private:
-  Eigen::Vector2i offset(int x, int k) const { return hexagon_offset(node_[x].base, k); }
+  static constexpr double kFar = 1e300;
 
   CartesianGrid grid_;
   Eigen::VectorXd domain_;
@@ -91,15 +102,12 @@ class StencilField {
   MetricField metric_;
   std::vector<Eigen::Matrix2d> seed_metrics_;
   std::vector<LatticeStencil> shared_;  ///< one, or one per crystal
-  /// Metric field: metric and superbase at each node (side by side: one
-  /// cache line per update), reverse stencils as x * 8 + k, CSR by the node
-  /// reached.
-  struct NodeStencil {
-    Eigen::Matrix2d M;
-    Superbase base;
-  };
-  std::vector<NodeStencil> node_;
+  /// Metric field: the stencil at each node, reverse stencils as x * 8 + k,
+  /// CSR by the node reached, and whether a node's reverse stencil differs
+  /// from its own hexagon reflected (only there is the CSR read).
+  std::vector<LatticeStencil> node_;
   std::vector<int> rev_start_, rev_;
+  std::vector<std::uint8_t> irregular_;
 };
 
 }  // namespace homesh

@@ -36,6 +36,10 @@ struct VoronoiProblem {
   std::vector<Eigen::Matrix2d> seed_metrics;
   /// Optional, grid.node_count() values: a signed distance (or level set with
   /// |grad| ~ 1) of the domain at the grid nodes, < 0 inside, > 0 outside.
+  /// The fast-marching engine takes |domain| as a lower bound of the distance
+  /// to the boundary (a segment whose ends' clearances add up to its length
+  /// is inside): a distance capped to a band, or the max/min of distances,
+  /// qualify.
   /// Empty: the domain is the whole grid. The boundary crystal of Section 2.6
   /// is {domain >= 0}, i.e. phi_b = -domain, and N_b = grad(domain) / |grad|
   /// is the outward normal of the domain. Walls thinner than 3 cells may let

@@ -1,8 +1,10 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "core/error.h"
 #include "voronoi/label_contacts.h"
@@ -76,17 +78,31 @@ CrystalPartition check_labels(const VoronoiProblem& p, const Eigen::Matrix2Xd& s
 TEST_CASE("the lattice stencil is an M-obtuse superbase at any anisotropy", "[voronoi][fmm]") {
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> angle(0.0, M_PI), aspect(0.0, 3.0);
+  const Eigen::Vector2d h(0.01, 0.02);
   for (int trial = 0; trial < 200; ++trial) {
     const double ratio = std::pow(10.0, aspect(gen));
     const Eigen::Matrix2d M = metric_from_axes(angle(gen), 1.0, 1.0 / ratio);
-    const LatticeStencil st = lattice_stencil(M, 0.01, 0.02);
+    const LatticeStencil st = lattice_stencil(M, h.x(), h.y());
     for (int k = 0; k < 6; ++k) {
-      const Eigen::Vector2i u = st.offset[k], v = st.offset[(k + 1) % 6];
+      const Eigen::Vector2i u = st.offset(k), v = st.offset((k + 1) % 6);
+      const Eigen::Vector2d U = u.cast<double>().cwiseProduct(h),
+                            V = v.cast<double>().cwiseProduct(h);
       // Unimodular counter-clockwise sectors with M-acute angles.
       CHECK(u.x() * v.y() - u.y() * v.x() == 1);
-      CHECK(st.vec[k].dot(M * st.vec[(k + 1) % 6]) >= -1e-12 * st.length[k] * st.length[k]);
+      CHECK(U.dot(M * V) >= -1e-12 * st.length(k) * st.length(k));
+      // The grid-unit lengths and sector constants are the physical ones.
+      CHECK(st.length(k) == Approx(std::sqrt(U.dot(M * U))));
+      const SectorConstants c = st.sector(k);
+      const Eigen::Vector2d W = V - U;
+      CHECK(c.A == Approx(U.dot(M * U)));
+      CHECK(c.B == Approx(U.dot(M * W)).margin(1e-12 * c.A));
+      CHECK(c.C == Approx(W.dot(M * W)));
+      CHECK(c.det == Approx(c.A * c.C - c.B * c.B).epsilon(1e-6));
     }
-    CHECK((st.offset[0] + st.offset[2] + st.offset[4]).isZero());
+    CHECK((st.offset(0) + st.offset(2) + st.offset(4)).isZero());
+    // Any grid vector's length, through its coordinates in the superbase.
+    const Eigen::Vector2d r = Eigen::Vector2d(3.5, -7.25).cwiseProduct(h);
+    CHECK(st.norm2(Eigen::Vector2d(3.5, -7.25)) == Approx(r.dot(M * r)));
   }
 }
 
@@ -95,17 +111,18 @@ TEST_CASE("the Hopf-Lax sector update is exact for a plane wave", "[voronoi][fmm
   // update from the sector holding the characteristic -M^-1 g returns it.
   const Eigen::Matrix2d M = metric_from_axes(0.4, 1.0, 0.1);
   const LatticeStencil st = lattice_stencil(M, 0.01, 0.01);
+  const auto vec = [&](int k) { return Eigen::Vector2d(0.01 * st.offset(k % 6).cast<double>()); };
   int exact = 0;
   for (int m = 0; m < 64; ++m) {
     const Eigen::Vector2d dir(std::cos(m * M_PI / 32), std::sin(m * M_PI / 32));
     const Eigen::Vector2d g = dir / std::sqrt(dir.dot(M.inverse() * dir));
     for (int k = 0; k < 6; ++k) {
-      const double a = g.dot(st.vec[k]), b = g.dot(st.vec[(k + 1) % 6]);
-      const double t = hopf_lax(st.sector[k], a, b);
+      const double a = g.dot(vec(k)), b = g.dot(vec(k + 1));
+      const double t = hopf_lax(st.sector(k), a, b);
       // Characteristic in the sector: the update must find T(x) = 0.
       const Eigen::Vector2d c = -(M.inverse() * g);
       Eigen::Matrix2d B;
-      B << st.vec[k], st.vec[(k + 1) % 6];
+      B << vec(k), vec(k + 1);
       const Eigen::Vector2d w = B.inverse() * c;
       if (w.minCoeff() > 1e-9) {
         CHECK(t == Approx(0.0).margin(1e-12));
@@ -152,12 +169,29 @@ TEST_CASE("label contacts: pairs across grid edges, crystals at the outside", "[
 
 TEST_CASE("fast marching labels match the exact metric Voronoi diagram at anisotropy 1, 10, 100",
           "[voronoi][fmm]") {
+  // Each constant metric three ways: as it is (the update is the exact seed
+  // distance); as a metric field whose corner tensors differ in the last
+  // bits (every node has its own stencil and every update does the Hopf-Lax,
+  // source and reverse-stencil work); and that with the unit square as a
+  // domain (visibility and clearance tests on every update). The exact
+  // answer is the same, and so must the labels be.
   const int n = 301;
   const Eigen::Matrix2Xd seeds = test::uniform_seeds(20, 3, 0.05, 0.95);
+  const CartesianGrid coarse = CartesianGrid::spanning({0, 0}, {1, 1}, 5, 5);
   for (const double ratio : {1.0, 10.0, 100.0}) {
     INFO("anisotropy 1:" << ratio);
     const Eigen::Matrix2d M = metric_from_axes(0.5, 1.0, 1.0 / ratio);
-    check_labels(unit_square(n, seeds, M), seeds, M);
+    VoronoiProblem p = unit_square(n, seeds, M);
+    check_labels(p, seeds, M);
+    std::vector<Eigen::Matrix2d> corners;
+    for (int k = 0; k < coarse.node_count(); ++k) corners.push_back(M * (1.0 + 1e-12 * k));
+    p.metric = MetricField(coarse, corners);
+    REQUIRE(!p.metric.uniform());
+    check_labels(p, seeds, M);
+    p.domain = sample_on_grid(p.grid, [](const Eigen::Vector2d& x) {
+      return -std::min({x.x(), x.y(), 1.0 - x.x(), 1.0 - x.y()});
+    });
+    check_labels(p, seeds, M);
   }
 }
 
