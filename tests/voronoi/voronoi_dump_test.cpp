@@ -3,6 +3,8 @@
 //
 //   test_numeric "[.voronoi_pictures]"   the thesis examples, as CSV files
 //   test_numeric "[.voronoi_bench]"      engine and CGAL timings, one CSV
+//   test_numeric "[.voronoi_bench_general]"  fast marching with a domain or a
+//                                        varying metric, one CSV
 //
 // Both write into the directory named by HOMESH_VORONOI_OUT (default: the
 // working directory). The benchmark reads HOMESH_VORONOI_BENCH_GRID (grid
@@ -12,17 +14,22 @@
 // engine, default 10000). Times are the process's CPU seconds (std::clock;
 // the engines and CGAL run on one thread), which a machine shared with other
 // jobs does not inflate as it does wall time.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "thesis_examples.h"
 #include "voronoi/cgal_delaunay.h"
+#include "voronoi/loop_distance.h"
 #include "voronoi/refine_dual.h"
 #include "voronoi/voronoi_delaunay.h"
 #include "voronoi/voronoi_engines.h"
@@ -151,6 +158,63 @@ TEST_CASE("benchmark the engines against CGAL", "[.voronoi_bench]") {
       csv << S << "," << engine << "," << n << "," << seconds << "," << part.steps << ","
           << dual.triangles.size() << "," << reference.size() << "," << matching << std::endl;
     }
+  }
+  SUCCEED();
+}
+
+// Fast marching where each update does the full work (Hopf-Lax, sources,
+// visibility): the thesis' aerofoil (a domain; isotropic, or an anisotropic
+// metric field) and the benchmark's square with 1000 seeds under a metric
+// field that turns (no domain) or round a hole (a domain, constant metric).
+// Best of three CPU times of grow_crystals; rate = grid nodes over seconds.
+// HOMESH_VORONOI_BENCH_CASE names one case to run alone.
+TEST_CASE("benchmark fast marching on the general path", "[.voronoi_bench_general]") {
+  const int n = std::stoi(env("HOMESH_VORONOI_BENCH_GRID", "2000"));
+  std::vector<std::pair<std::string, VoronoiProblem>> cases;
+  cases.emplace_back("aerofoil_iso_600", test::aerofoil_130(false, 600).problem);
+  cases.emplace_back("aerofoil_aniso_600", test::aerofoil_130(true, 600).problem);
+  VoronoiProblem square;
+  square.grid = CartesianGrid::spanning({0, 0}, {1, 1}, n, n);
+  square.seeds = test::uniform_seeds(1000, 1, 0.0, 1.0);
+  const CartesianGrid coarse = CartesianGrid::spanning({0, 0}, {1, 1}, 21, 21);
+  std::vector<Eigen::Matrix2d> M;
+  for (int j = 0; j < coarse.ny; ++j)
+    for (int i = 0; i < coarse.nx; ++i)
+      M.push_back(metric_from_axes(M_PI * (i + j) / 20.0, 0.03, 0.01));
+  VoronoiProblem turning = square;
+  turning.metric = MetricField(coarse, M);
+  cases.emplace_back("square_turning_metric", turning);
+  VoronoiProblem holed = square;
+  Eigen::Matrix2Xd box(2, 4), hole(2, 64);
+  box << 0, 1, 1, 0, 0, 0, 1, 1;
+  for (int k = 0; k < 64; ++k)
+    hole.col(k) = Eigen::Vector2d(0.5, 0.5) + 0.2 * Eigen::Vector2d(std::cos(-2 * M_PI * k / 64),
+                                                                    std::sin(-2 * M_PI * k / 64));
+  holed.domain = loop_signed_distance(holed.grid, {box, hole}, 8 * holed.grid.ds());
+  Eigen::Matrix2Xd kept(2, 0);
+  for (int s = 0; s < square.seeds.cols(); ++s)
+    if ((square.seeds.col(s) - Eigen::Vector2d(0.5, 0.5)).norm() > 0.21) {
+      kept.conservativeResize(2, kept.cols() + 1);
+      kept.col(kept.cols() - 1) = square.seeds.col(s);
+    }
+  holed.seeds = kept;
+  cases.emplace_back("square_hole", holed);
+  std::ofstream csv(out_path("voronoi_bench_general.csv"));
+  csv << "case,seeds,nodes,seconds,steps,mnodes_per_s\n";
+  const std::string only = env("HOMESH_VORONOI_BENCH_CASE", "");
+  for (const auto& [name, p] : cases) {
+    if (!only.empty() && name != only) continue;
+    double best = 1e300;
+    long steps = 0;
+    for (int run = 0; run < 3; ++run) {
+      const std::clock_t start = std::clock();
+      const CrystalPartition part = grow_crystals(p, "fast_marching");
+      best = std::min(best, static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
+      steps = part.steps;
+    }
+    const int nodes = p.grid.node_count();
+    csv << name << "," << p.seeds.cols() << "," << nodes << "," << best << "," << steps << ","
+        << nodes / best / 1e6 << std::endl;
   }
   SUCCEED();
 }
