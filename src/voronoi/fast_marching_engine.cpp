@@ -262,11 +262,6 @@ class Sweep {
   void lower(int e, double t, int source, double source_time) {
     if (assign(e, t, source, source_time)) queue_[entries_[e].label].push({t, e});
   }
-  Eigen::Vector2d point(int source) const {
-    const CartesianGrid& g = field_.grid();
-    return source < 0 ? Eigen::Vector2d(seeds_.col(-1 - source))
-                      : g.point(source % g.nx, source / g.nx);
-  }
   // The stencil of crystal s at node x.
   template <bool kVarying>
   const LatticeStencil& stencil(int s, int x) const {
@@ -302,8 +297,13 @@ class Sweep {
       length2 = 0.5 * (length2 + other2);
     }
     if constexpr (kDomain) {
-      const double clear = source < 0 ? seed_clearance_[-1 - source] : field_.clearance(source);
-      if (!field_.segment_clear(point(source), clear, g.point(ix, jx), field_.clearance(x),
+      // The source's point and clearance (a node's from its grid indices above).
+      const bool seed = source < 0;
+      const Eigen::Vector2d p =
+          seed ? Eigen::Vector2d(seeds_.col(-1 - source))
+               : g.point(static_cast<int>(from.x()), static_cast<int>(from.y()));
+      const double clear = seed ? seed_clearance_[-1 - source] : field_.clearance(source);
+      if (!field_.segment_clear(p, clear, g.point(ix, jx), field_.clearance(x),
                                 std::sqrt(euclid2)))
         return kInf;
     }

@@ -47,23 +47,13 @@ class StencilField {
   /// its hexagon offset k.
   template <class F>
   void for_each_reverse(int s, int y, F&& f) const {
-    if (rev_start_.empty()) {
-      const LatticeStencil& st = shared_[shared_.size() == 1 ? 0 : s];
-      const int iy = y % grid_.nx, jy = y / grid_.nx;
-      for (int k = 0; k < 6; ++k) {
-        const Eigen::Vector2i o = st.offset(k);
-        const int i = iy - o.x(), j = jy - o.y();
-        if (i >= 0 && j >= 0 && i < grid_.nx && j < grid_.ny) f(grid_.index(i, j), k);
-      }
-      return;
-    }
-    if (irregular_[y]) {
+    if (varying() && irregular_[y]) {
       for (int r = rev_start_[y]; r < rev_start_[y + 1]; ++r) f(rev_[r] >> 3, rev_[r] & 7);
       return;
     }
-    // Where the stencils round y are y's own, its reverse stencil is its
-    // hexagon reflected: no reverse list to load.
-    const LatticeStencil& st = node_[y];
+    // One stencil for all nodes, or the stencils round y are y's own: the
+    // reverse stencil is y's hexagon reflected, no reverse list to load.
+    const LatticeStencil& st = stencil(s, y);
     const int iy = y % grid_.nx, jy = y / grid_.nx;
     for (int k = 0; k < 6; ++k) {
       const Eigen::Vector2i o = st.offset(k);
