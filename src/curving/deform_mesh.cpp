@@ -169,7 +169,7 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
   ElasticitySolver solver(m, boundary_condition(0.0), {opt.params.assembly, opt.solver});
   const double full_step = 1.0 / opt.increments;
   double step = full_step;
-  int halvings = 0;
+  bool retrying = false;  // the last increment failed: re-solve with its factor
   Progress progress("boundary motion", 0);
   while (r.reached < 1.0 - 1e-12) {
     const double next = std::min(1.0, r.reached + step);
@@ -177,9 +177,8 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
                                   std::to_string(r.solves + 1));
     const DirichletBC bc = boundary_condition(next);
     const ElasticitySolution s =
-        halvings == 0
-            ? solver.solve(r.mesh.x, formulation.coefficients(r.mesh, m, opt.params), bc)
-            : solver.resolve(bc);
+        retrying ? solver.resolve(bc)
+                 : solver.solve(r.mesh.x, formulation.coefficients(r.mesh, m, opt.params), bc);
     ++r.solves;
     r.iterations += s.iterations;
 
@@ -190,15 +189,15 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
       r.mesh = std::move(trial);
       r.reached = next;
       r.worst_ratio = v.worst;
-      halvings = 0;
+      retrying = false;
       step = std::min(2 * step, full_step);
       continue;
     }
     if (r.invalid_at_failure == 0) r.invalid_at_failure = v.invalid;
-    // Not a count of halvings in a row: after each acceptance the step doubles,
-    // so a motion that creeps towards its validity limit would halve and
-    // succeed forever in ever smaller steps.
-    ++halvings;
+    // A bound on the step, not a count of halvings in a row: after each
+    // acceptance the step doubles, so a motion that creeps towards its
+    // validity limit would halve and succeed forever in ever smaller steps.
+    retrying = true;
     step *= 0.5;
     if (step < std::ldexp(full_step, -opt.max_halvings)) return r;
   }

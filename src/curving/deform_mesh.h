@@ -7,10 +7,11 @@
 // (Bezier bounds of det J); an increment that would break it is halved, and
 // once a step below the first increment / 2^max_halvings would be needed the
 // deformation gives up and returns the last valid state; after an accepted
-// increment the step doubles again, up to its initial size. The stiffness changes with the mesh at every accepted
-// increment (it is posed on the deformed mesh), so each one is assembled and
-// factorised anew on the same pattern and symbolic analysis; a halved increment
-// re-solves with the factor it already has.
+// increment the step doubles again, up to its initial size. The stiffness
+// changes with the mesh at every accepted increment (it is posed on the
+// deformed mesh), so each one is assembled and factorised anew on the same
+// pattern and symbolic analysis; a halved increment re-solves with the factor
+// it already has.
 #include <Eigen/Core>
 #include <string>
 #include <vector>

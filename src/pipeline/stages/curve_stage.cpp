@@ -64,7 +64,8 @@ void run(Context& ctx, const Options& opt) {
   }
   // With vertices=fixed the linear mesh's interior vertices are held where they are:
   // only the nodes the order raising added move.
-  std::vector<bool> held = boundary_nodes(raised);
+  const std::vector<bool> boundary = boundary_nodes(raised);
+  std::vector<bool> held = boundary;
   if (fixed_vertices) {
     const std::vector<bool> vertex = vertex_nodes(raised);
     for (int i = 0; i < raised.num_nodes(); ++i)
@@ -85,7 +86,7 @@ void run(Context& ctx, const Options& opt) {
                  restricted, 100 * r.reached);
     d.reach = 0;
     d.layers = 0;
-    r = deform_mesh(raised, target, boundary_nodes(raised), d);
+    r = deform_mesh(raised, target, boundary, d);
   }
   if (!r.complete)
     throw Error(fmt::format(
