@@ -9,6 +9,8 @@
 #include <limits>
 #include <vector>
 
+#include "core/huge_page_allocator.h"
+
 namespace homesh {
 
 /// The arrival time of one crystal at one node and the source it is measured
@@ -74,8 +76,8 @@ class CrystalEntries {
  private:
   int size() const { return static_cast<int>(slot_.size()); }
 
-  std::vector<CrystalEntry> slot_, extra_;
-  std::vector<int> extra_node_;
+  HugeVector<CrystalEntry> slot_, extra_;
+  HugeVector<int> extra_node_;
 };
 
 }  // namespace homesh

@@ -271,21 +271,21 @@ class Sweep {
   // straight from `source` (a node, or -1 - c for the seed of crystal c)
   // reached at source_time: that time plus the length of the segment in the
   // crystal's metric (in a varying field, the mean of the metrics at its
-  // ends, within kTrustCells cells or where the metric is the same along it).
-  // +infinity if the segment leaves the domain. Lengths in grid units through
-  // the stencils' Gram values.
-  template <bool kVarying, bool kDomain>
-  double from_source(int s, int x, int ix, int jx, const LatticeStencil& st, int source,
+  // ends, within kTrustCells cells or where the metric is the same along it,
+  // else +infinity). Lengths in grid units through the stencils' Gram values.
+  // Whether the segment stays in the domain is sees(), apart: only a time
+  // that would win is worth its test.
+  template <bool kVarying>
+  double from_source(int s, int ix, int jx, const LatticeStencil& st, int source,
                      double source_time) const {
     const CartesianGrid& g = field_.grid();
-    const Eigen::Vector2d from = source < 0 ? Eigen::Vector2d(seed_grid_.col(-1 - source))
-                                            : Eigen::Vector2d(source % g.nx, source / g.nx);
+    const Eigen::Vector2d from = source_point(source);
     const Eigen::Vector2d v = Eigen::Vector2d(ix, jx) - from;
-    const double euclid2 = v.x() * v.x() * g.dx * g.dx + v.y() * v.y() * g.dy * g.dy;
     double length2 = st.norm2(v);
     if constexpr (kVarying) {
       const LatticeStencil& so = source < 0 ? seed_stencil_[s] : field_.node_stencil(source);
       const double other2 = so.norm2(v);
+      const double euclid2 = v.x() * v.x() * g.dx * g.dx + v.y() * v.y() * g.dy * g.dy;
       if (euclid2 > trust2_) {
         const double tolerance = kSameMetric * g.ds() / std::sqrt(euclid2) * length2;
         const Eigen::Vector2d m = from + 0.5 * v;
@@ -296,24 +296,32 @@ class Sweep {
       }
       length2 = 0.5 * (length2 + other2);
     }
-    if constexpr (kDomain) {
-      // The source's point and clearance (a node's from its grid indices above).
-      const bool seed = source < 0;
-      const Eigen::Vector2d p =
-          seed ? Eigen::Vector2d(seeds_.col(-1 - source))
-               : g.point(static_cast<int>(from.x()), static_cast<int>(from.y()));
-      const double clear = seed ? seed_clearance_[-1 - source] : field_.clearance(source);
-      if (!field_.segment_clear(p, clear, g.point(ix, jx), field_.clearance(x),
-                                std::sqrt(euclid2)))
-        return kInf;
-    }
     return source_time + std::sqrt(length2);
+  }
+  // A source's position in grid units from the origin.
+  Eigen::Vector2d source_point(int source) const {
+    const int nx = field_.grid().nx;
+    return source < 0 ? Eigen::Vector2d(seed_grid_.col(-1 - source))
+                      : Eigen::Vector2d(source % nx, source / nx);
+  }
+  // Whether the segment from `source` to node x = (ix, jx) stays in the
+  // domain.
+  bool sees(int x, int ix, int jx, int source) const {
+    const CartesianGrid& g = field_.grid();
+    const bool seed = source < 0;
+    const Eigen::Vector2d from = source_point(source);
+    const Eigen::Vector2d p = seed ? Eigen::Vector2d(seeds_.col(-1 - source))
+                                   : g.point(static_cast<int>(from.x()), static_cast<int>(from.y()));
+    const double clear = seed ? seed_clearance_[-1 - source] : field_.clearance(source);
+    const Eigen::Vector2d q = g.point(ix, jx);
+    return field_.segment_clear(p, clear, q, field_.clearance(x), (q - p).norm());
   }
   // The accepted entry of crystal s at node x = (ix, jx) + o, if it is a node
   // the update from x may use, else -1.
   template <bool kDomain>
-  int upwind(int s, int x, int ix, int jx, const Eigen::Vector2i& o) const {
+  int upwind(int s, int x, int ix, int jx, const LatticeStencil& st, int k) const {
     const CartesianGrid& g = field_.grid();
+    const Eigen::Vector2i o = st.offset(k);
     const int i = ix + o.x(), j = jx + o.y();
     if (static_cast<unsigned>(i) >= static_cast<unsigned>(g.nx) ||
         static_cast<unsigned>(j) >= static_cast<unsigned>(g.ny))
@@ -322,7 +330,7 @@ class Sweep {
     const int e = entries_.find(z, s);
     if (e < 0 || !entries_[e].accepted()) return -1;
     if constexpr (kDomain)
-      if (!field_.passable(x, z)) return -1;
+      if (!field_.passable_step(original_[s], x, k)) return -1;
     return e;
   }
   // Entry e (crystal s at node y) was accepted: update the nodes whose
@@ -361,7 +369,7 @@ class Sweep {
       int target = entries_.find(x, s);
       if (target >= 0 && entries_[target].accepted()) return;
       if constexpr (kDomain)
-        if (!field_.passable(x, y)) return;
+        if (!field_.passable_step(original_[s], x, k)) return;
       if (target < 0) target = entries_.add(x, s);
       Entry& to = entries_[target];  // no entry is added below
       to.hop = static_cast<std::uint8_t>(std::min<int>(to.hop, hop));
@@ -375,19 +383,25 @@ class Sweep {
       const LatticeStencil& st = stencil<kVarying>(s, x);
       const int kp = kPrev[k], kn = kNext[k];
       double t = a + st.length(k);
-      const int before = upwind<kDomain>(s, x, ix, jx, st.offset(kp));
+      const int before = upwind<kDomain>(s, x, ix, jx, st, kp);
       if (before >= 0) t = std::min(t, hopf_lax(st.sector(kp), entries_[before].time, a));
-      const int after = upwind<kDomain>(s, x, ix, jx, st.offset(kn));
+      const int after = upwind<kDomain>(s, x, ix, jx, st, kn);
       if (after >= 0) t = std::min(t, hopf_lax(st.sector(k), a, entries_[after].time));
       int source = x;
       double source_time = t, best = kInf;
       // (In a varying field a seed block's time, in the seed's metric, is not
       // from_source's, in the mean of the two ends' metrics: not skipped.)
       const int known = kVarying && to.source < 0 ? x : to.source;
+      // The least time from a source seeing x, if not above t: else the
+      // time is t. Sources at x's time or later are skipped (with t, as
+      // large, they would not lower it), and so is the domain test of one
+      // that would not win.
+      const double held = to.time;
       const auto consider = [&](int from, double from_time) {
         if (from == known) return;
-        const double ts = from_source<kVarying, kDomain>(s, x, ix, jx, st, from, from_time);
-        if (ts < best) best = ts, source = from, source_time = from_time;
+        const double ts = from_source<kVarying>(s, ix, jx, st, from, from_time);
+        if (ts < best && ts <= t && ts < held && (!kDomain || sees(x, ix, jx, from)))
+          best = ts, source = from, source_time = from_time;
       };
       if (e_source != y) consider(e_source, e_source_time);
       const int before_source = before >= 0 ? entries_[before].source : e_source;
@@ -425,8 +439,8 @@ class Sweep {
   CrystalEntries entries_;
   // Per node, the crystal of least accepted time so far (-1: none) and that
   // time, apart: the updates read only the first.
-  std::vector<int> winner_;
-  std::vector<double> winner_time_;
+  HugeVector<int> winner_;
+  HugeVector<double> winner_time_;
   std::vector<TimeHeap> queue_;  ///< per crystal, its pending entries
   double slab_;
   long block_;  ///< crystals per block

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "core/error.h"
@@ -18,7 +20,7 @@ StencilField::StencilField(const VoronoiProblem& problem)
   const int n = g.node_count();
   if (has_domain()) {
     inside_.resize(n);
-    for (int k = 0; k < n; ++k) inside_[k] = domain_(k) <= 0.0;
+    for (int k = 0; k < n; ++k) inside_[k] = domain_(k) <= 0.0 ? kInside : 0;
   }
   const int S = static_cast<int>(problem.seeds.cols());
   if (!seed_metrics_.empty()) {
@@ -31,6 +33,7 @@ StencilField::StencilField(const VoronoiProblem& problem)
   }
   if (metric_.uniform()) {
     shared_.push_back(lattice_stencil(metric_.metric(0), g.dx, g.dy));
+    mask_steps();
     return;
   }
   node_.resize(n);
@@ -54,7 +57,10 @@ StencilField::StencilField(const VoronoiProblem& problem)
       }
   };
   const auto same_base = [&](int x, int y) {
-    return std::equal(node_[x].e, node_[x].e + 4, node_[y].e);
+    std::uint64_t a, b;  // the four offsets at once (std::equal calls memcmp)
+    std::memcpy(&a, node_[x].e, sizeof a);
+    std::memcpy(&b, node_[y].e, sizeof b);
+    return a == b;
   };
   irregular_.assign(n, 0);
   std::vector<int> reached(n, 0);
@@ -79,6 +85,35 @@ StencilField::StencilField(const VoronoiProblem& problem)
   for_each_reach([&](int x, int k, int y) {
     if (irregular_[y]) rev_[fill[y]++] = x * 8 + k;
   });
+  mask_steps();
+}
+
+void StencilField::mask_steps() {
+  if (!has_domain()) return;
+  const CartesianGrid& g = grid_;
+  for (int j = 0, x = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i, ++x) {
+      if (!(inside_[x] & kInside)) continue;
+      const LatticeStencil& st = stencil(0, x);
+      // Far from the boundary every step lies in the disc of x's clearance.
+      double reach2 = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector2i o = st.offset(k);
+        reach2 = std::max(reach2, o.x() * o.x() * g.dx * g.dx + o.y() * o.y() * g.dy * g.dy);
+      }
+      const double cx = clearance(x);
+      if (cx >= 0.0 && cx * cx >= reach2) {
+        inside_[x] |= 0x3f;
+        continue;
+      }
+      for (int k = 0; k < 6; ++k) {
+        const Eigen::Vector2i o = st.offset(k);
+        const int a = i + o.x(), c = j + o.y();
+        if (a >= 0 && c >= 0 && a < g.nx && c < g.ny && passable(x, g.index(a, c)))
+          inside_[x] |= static_cast<std::uint8_t>(1 << k);
+      }
+    }
+  stepped_ = true;
 }
 
 double StencilField::domain_at(const Eigen::Vector2d& p) const {

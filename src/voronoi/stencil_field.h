@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/huge_page_allocator.h"
 #include "voronoi/lattice_stencil.h"
 #include "voronoi/voronoi_problem.h"
 
@@ -30,7 +31,7 @@ class StencilField {
   /// A metric field that varies in space (stencils per node).
   bool varying() const { return !rev_start_.empty(); }
   /// domain <= 0 (or no domain): a node crystals may enter.
-  bool inside(int node) const { return inside_.empty() || inside_[node] != 0; }
+  bool inside(int node) const { return inside_.empty() || (inside_[node] & kInside) != 0; }
 
   /// The stencil crystal s uses at node x.
   const LatticeStencil& stencil(int s, int x) const {
@@ -67,6 +68,16 @@ class StencilField {
   double clearance(int x) const { return has_domain() ? -domain_(x) : kFar; }
   /// Whether the segment between nodes x and z stays in the domain.
   bool passable(int x, int z) const;
+  /// Whether the step from node x (inside) to x + offset k of crystal s's
+  /// stencil there stays in the domain: passable(x, that node), read from a
+  /// mask per node where all crystals share the stencil at x.
+  bool passable_step(int s, int x, int k) const {
+    if (!stepped_) {
+      const Eigen::Vector2i o = stencil(s, x).offset(k);
+      return passable(x, x + o.x() + o.y() * grid_.nx);
+    }
+    return (inside_[x] >> k) & 1;
+  }
   /// Whether the segment pq, of Euclidean length `length`, stays in the
   /// domain: the clearances cp and cq of its ends add up to its length (the
   /// level set is a distance, so the discs of those radii hold the segment),
@@ -85,19 +96,25 @@ class StencilField {
 
  private:
   static constexpr double kFar = 1e300;
+  static constexpr std::uint8_t kInside = 1 << 6;
+
+  // The masks of passable_step (with a domain, and one stencil per node).
+  void mask_steps();
 
   CartesianGrid grid_;
   Eigen::VectorXd domain_;
-  std::vector<std::uint8_t> inside_;
+  /// Per node, kInside, and bit k: passable_step(x, k) (if stepped_).
+  HugeVector<std::uint8_t> inside_;
+  bool stepped_ = false;
   MetricField metric_;
   std::vector<Eigen::Matrix2d> seed_metrics_;
   std::vector<LatticeStencil> shared_;  ///< one, or one per crystal
   /// Metric field: the stencil at each node, reverse stencils as x * 8 + k,
   /// CSR by the node reached, and whether a node's reverse stencil differs
   /// from its own hexagon reflected (only there is the CSR read).
-  std::vector<LatticeStencil> node_;
-  std::vector<int> rev_start_, rev_;
-  std::vector<std::uint8_t> irregular_;
+  HugeVector<LatticeStencil> node_;
+  HugeVector<int> rev_start_, rev_;
+  HugeVector<std::uint8_t> irregular_;
 };
 
 }  // namespace homesh
