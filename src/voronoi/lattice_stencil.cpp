@@ -39,6 +39,18 @@ Superbase obtuse_superbase(const Eigen::Matrix2d& G) {
   return {b1, b2};
 }
 
+LatticeStencil lattice_stencil(const Eigen::Matrix2d& M, double dx, double dy,
+                               const LatticeStencil& near) {
+  const Eigen::Matrix2d scale = Eigen::Vector2d(dx, dy).asDiagonal();
+  const Eigen::Matrix2d G = scale * M * scale;
+  const Superbase b = near.base();
+  LatticeStencil st = near;
+  st.g11 = dot(G, b.e1, b.e1), st.g12 = dot(G, b.e1, b.e2), st.g22 = dot(G, b.e2, b.e2);
+  // Obtuse: <e1, e2> <= 0, <e1, e3> = -g11 - g12 <= 0, <e2, e3> = -g22 - g12 <= 0.
+  if (st.g12 <= 0.0 && st.g11 + st.g12 >= 0.0 && st.g22 + st.g12 >= 0.0 && st.g11 > 0.0) return st;
+  return lattice_stencil(M, dx, dy);
+}
+
 LatticeStencil lattice_stencil(const Eigen::Matrix2d& M, double dx, double dy) {
   const Eigen::Matrix2d scale = Eigen::Vector2d(dx, dy).asDiagonal();
   const Eigen::Matrix2d G = scale * M * scale;

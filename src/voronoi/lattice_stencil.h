@@ -122,5 +122,12 @@ struct alignas(32) LatticeStencil {
 /// homesh::Error if an offset does not fit 16 bits (anisotropy beyond ~10^4
 /// in grid cells).
 LatticeStencil lattice_stencil(const Eigen::Matrix2d& M, double dx, double dy);
+/// The same, trying first the superbase of `near` (a stencil of a nearby
+/// metric): kept if it is M-obtuse too, which in a smooth metric field it
+/// nearly always is, and saves the reduction. Any M-obtuse superbase makes
+/// the stencil of M (Mirebeau 2014: unique up to order and signs but where
+/// an angle is right).
+LatticeStencil lattice_stencil(const Eigen::Matrix2d& M, double dx, double dy,
+                               const LatticeStencil& near);
 
 }  // namespace homesh

@@ -88,10 +88,28 @@ double MetricField::stencil_speed(const ShepardStencil& s, const Eigen::Vector2d
 }
 
 Eigen::Matrix2d MetricField::metric_at(const Eigen::Vector2d& p) const {
-  const ShepardStencil s = stencil(p);
-  Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
-  for (int k = 0; k < 4; ++k) M += s.w[k] * M_[s.node[k]];
-  return M;
+  // stencil(p)'s weights 1/d_k^2, normalised, as products with a single
+  // division: w_k = prod_{l != k} d_l^2 / sum_m prod_{l != m} d_l^2 (the
+  // distances in units of dx, the weights being scale-free). The fast
+  // marching engine takes one metric per fine node.
+  const CartesianGrid& g = coarse_;
+  const double u = std::clamp((p.x() - g.origin.x()) / g.dx, 0.0, g.nx - 1.0);
+  const double v = std::clamp((p.y() - g.origin.y()) / g.dy, 0.0, g.ny - 1.0);
+  const int i = std::min(static_cast<int>(u), g.nx - 2);
+  const int j = std::min(static_cast<int>(v), g.ny - 2);
+  const double ratio = g.dy / g.dx;
+  const double x0 = u - i, x1 = 1.0 - x0, y0 = (v - j) * ratio, y1 = ratio - y0;
+  // Corners counter-clockwise from (i, j), as in stencil().
+  const double d[4] = {x0 * x0 + y0 * y0, x1 * x1 + y0 * y0, x1 * x1 + y1 * y1, x0 * x0 + y1 * y1};
+  const int node[4] = {g.index(i, j), g.index(i + 1, j), g.index(i + 1, j + 1), g.index(i, j + 1)};
+  for (int k = 0; k < 4; ++k)
+    if (d[k] == 0.0) return M_[node[k]];
+  const double d01 = d[0] * d[1], d23 = d[2] * d[3];
+  const double w[4] = {d[1] * d23, d[0] * d23, d01 * d[3], d01 * d[2]};
+  const double scale = 1.0 / (w[0] + w[1] + w[2] + w[3]);
+  Eigen::Matrix2d M = w[0] * M_[node[0]];
+  for (int k = 1; k < 4; ++k) M += w[k] * M_[node[k]];
+  return M * scale;
 }
 
 }  // namespace homesh

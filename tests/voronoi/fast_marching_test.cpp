@@ -81,28 +81,38 @@ TEST_CASE("the lattice stencil is an M-obtuse superbase at any anisotropy", "[vo
   const Eigen::Vector2d h(0.01, 0.02);
   for (int trial = 0; trial < 200; ++trial) {
     const double ratio = std::pow(10.0, aspect(gen));
-    const Eigen::Matrix2d M = metric_from_axes(angle(gen), 1.0, 1.0 / ratio);
-    const LatticeStencil st = lattice_stencil(M, h.x(), h.y());
-    for (int k = 0; k < 6; ++k) {
-      const Eigen::Vector2i u = st.offset(k), v = st.offset((k + 1) % 6);
-      const Eigen::Vector2d U = u.cast<double>().cwiseProduct(h),
-                            V = v.cast<double>().cwiseProduct(h);
-      // Unimodular counter-clockwise sectors with M-acute angles.
-      CHECK(u.x() * v.y() - u.y() * v.x() == 1);
-      CHECK(U.dot(M * V) >= -1e-12 * st.length(k) * st.length(k));
-      // The grid-unit lengths and sector constants are the physical ones.
-      CHECK(st.length(k) == Approx(std::sqrt(U.dot(M * U))));
-      const SectorConstants c = st.sector(k);
-      const Eigen::Vector2d W = V - U;
-      CHECK(c.A == Approx(U.dot(M * U)));
-      CHECK(c.B == Approx(U.dot(M * W)).margin(1e-12 * c.A));
-      CHECK(c.C == Approx(W.dot(M * W)));
-      CHECK(c.det == Approx(c.A * c.C - c.B * c.B).epsilon(1e-6));
+    const double theta = angle(gen);
+    const Eigen::Matrix2d M = metric_from_axes(theta, 1.0, 1.0 / ratio);
+    // From scratch, and warm-started from the stencil of a metric turned a
+    // little (its superbase nearly always kept) and of an unrelated one.
+    const LatticeStencil near =
+        lattice_stencil(metric_from_axes(theta + 0.01, 1.0, 1.0 / ratio), h.x(), h.y());
+    const LatticeStencil far =
+        lattice_stencil(metric_from_axes(theta + 1.5, 1.0, 1.0), h.x(), h.y());
+    for (const LatticeStencil& st :
+         {lattice_stencil(M, h.x(), h.y()), lattice_stencil(M, h.x(), h.y(), near),
+          lattice_stencil(M, h.x(), h.y(), far)}) {
+      for (int k = 0; k < 6; ++k) {
+        const Eigen::Vector2i u = st.offset(k), v = st.offset((k + 1) % 6);
+        const Eigen::Vector2d U = u.cast<double>().cwiseProduct(h),
+                              V = v.cast<double>().cwiseProduct(h);
+        // Unimodular counter-clockwise sectors with M-acute angles.
+        CHECK(u.x() * v.y() - u.y() * v.x() == 1);
+        CHECK(U.dot(M * V) >= -1e-12 * st.length(k) * st.length(k));
+        // The grid-unit lengths and sector constants are the physical ones.
+        CHECK(st.length(k) == Approx(std::sqrt(U.dot(M * U))));
+        const SectorConstants c = st.sector(k);
+        const Eigen::Vector2d W = V - U;
+        CHECK(c.A == Approx(U.dot(M * U)));
+        CHECK(c.B == Approx(U.dot(M * W)).margin(1e-12 * c.A));
+        CHECK(c.C == Approx(W.dot(M * W)));
+        CHECK(c.det == Approx(c.A * c.C - c.B * c.B).epsilon(1e-6));
+      }
+      CHECK((st.offset(0) + st.offset(2) + st.offset(4)).isZero());
+      // Any grid vector's length, through its coordinates in the superbase.
+      const Eigen::Vector2d r = Eigen::Vector2d(3.5, -7.25).cwiseProduct(h);
+      CHECK(st.norm2(Eigen::Vector2d(3.5, -7.25)) == Approx(r.dot(M * r)));
     }
-    CHECK((st.offset(0) + st.offset(2) + st.offset(4)).isZero());
-    // Any grid vector's length, through its coordinates in the superbase.
-    const Eigen::Vector2d r = Eigen::Vector2d(3.5, -7.25).cwiseProduct(h);
-    CHECK(st.norm2(Eigen::Vector2d(3.5, -7.25)) == Approx(r.dot(M * r)));
   }
 }
 

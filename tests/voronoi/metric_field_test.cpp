@@ -73,6 +73,14 @@ TEST_CASE("MetricField: Shepard weights of the 4 corners and the speed average",
   CHECK(field.speed(coarse.point(2, 1), N) == Approx(metric_speed(M[5].inverse(), N)));
   CHECK(field.speed({5.0, 3.0}, N) == Approx(metric_speed(M[5].inverse(), N)));
   CHECK(field.metric_at(coarse.point(0, 0)).isApprox(M[0]));
+  // metric_at, with its single division, is the Shepard average of stencil().
+  for (const Eigen::Vector2d q :
+       {p, Eigen::Vector2d(0.2, 0.9), Eigen::Vector2d(2.7, 0.05), Eigen::Vector2d(-1.0, 0.5)}) {
+    const ShepardStencil w = field.stencil(q);
+    Eigen::Matrix2d average = Eigen::Matrix2d::Zero();
+    for (int k = 0; k < 4; ++k) average += w.w[k] * M[w.node[k]];
+    CHECK((field.metric_at(q) - average).norm() <= 1e-14 * average.norm());
+  }
 
   CHECK_THROWS_AS(MetricField(coarse, {M[0]}), Error);
   Eigen::Matrix2d bad;
