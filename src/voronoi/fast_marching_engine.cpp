@@ -72,7 +72,6 @@ class Sweep {
         seed_stencil_(M.size()),
         seed_clearance_(M.size()),
         entries_(field.grid().node_count()),
-        winner_(field.grid().node_count(), -1),
         winner_time_(field.grid().node_count(), kInf),
         queue_(seeds.cols()),
         slab_(slab_width(field.grid(), M)),
@@ -118,7 +117,7 @@ class Sweep {
         ++placed;
         if (entries_.any_below(x, t)) continue;
         const int e = entries_.add(x, s);
-        entries_[e].hop = 0;
+        entries_[e].set_hop(0);
         lower(e, t, -1 - s, 0.0);
       }
     return placed;
@@ -174,14 +173,14 @@ class Sweep {
     TimeHeap heap;
     const auto offer = [&](int x) {
       const int i = x % g.nx, j = x / g.nx;
-      const int from = winner_[x];
+      const int from = entries_.winner(x);
       const double from_time = winner_time_[x];
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int a = i + di, b = j + dj;
           if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= g.nx || b >= g.ny) continue;
           const int z = g.index(a, b);
-          if (winner_[z] >= 0 || !field_.inside(z)) continue;
+          if (entries_.winner(z) >= 0 || !field_.inside(z)) continue;
           const double t =
               from_time +
               std::sqrt(field_.stencil(original_[from], z).norm2(Eigen::Vector2d(di, dj)));
@@ -192,19 +191,19 @@ class Sweep {
     };
     bool missing = false;
     for (int x = 0; x < g.node_count() && !missing; ++x)
-      missing = winner_[x] < 0 && field_.inside(x);
+      missing = entries_.winner(x) < 0 && field_.inside(x);
     if (!missing) return;
     for (int x = 0; x < g.node_count(); ++x)
-      if (winner_[x] >= 0) offer(x);
+      if (entries_.winner(x) >= 0) offer(x);
     while (!heap.empty()) {
       const auto [t, e] = heap.top();
       heap.pop();
       Entry& en = entries_[e];
       const int x = entries_.node(e);
-      if (en.accepted() || en.time != t || winner_[x] >= 0) continue;
-      en.flags |= Entry::kAccepted;
-      en.hop = 0;
-      winner_[x] = en.label;
+      if (en.accepted() || en.time != t || entries_.winner(x) >= 0) continue;
+      en.accept();
+      en.set_hop(0);
+      entries_.winner(x) = en.label();
       winner_time_[x] = t;
       offer(x);
     }
@@ -222,7 +221,7 @@ class Sweep {
 
   /// The seed whose crystal holds node x (-1: none) and its time there.
   int label(int x) const {
-    const int c = winner_[x];
+    const int c = entries_.winner(x);
     return c < 0 ? -1 : original_[c];
   }
   double time(int x) const { return winner_time_[x]; }
@@ -237,16 +236,16 @@ class Sweep {
       Entry& en = entries_[e];
       if (en.accepted() || en.time != t) continue;
       if (max_steps > 0 && steps_ >= max_steps) return false;
-      en.flags |= Entry::kAccepted;
+      en.accept();
       ++steps_;
       const int x = entries_.node(e);
-      const int w = winner_[x];
-      if (w < 0 || t < winner_time_[x] || (t == winner_time_[x] && en.label < w)) {
-        winner_[x] = en.label;
+      int& w = entries_.winner(x);
+      if (w < 0 || t < winner_time_[x] || (t == winner_time_[x] && en.label() < w)) {
+        w = en.label();
         winner_time_[x] = t;
-        en.hop = 0;
+        en.set_hop(0);
       }
-      if (en.hop < kOwnTimeBand) (this->*spread_)(e);
+      if (en.hop() < kOwnTimeBand) (this->*spread_)(e);
     }
     return true;
   }
@@ -260,7 +259,7 @@ class Sweep {
     return true;
   }
   void lower(int e, double t, int source, double source_time) {
-    if (assign(e, t, source, source_time)) queue_[entries_[e].label].push({t, e});
+    if (assign(e, t, source, source_time)) queue_[entries_[e].label()].push({t, e});
   }
   // The stencil of crystal s at node x.
   template <bool kVarying>
@@ -356,15 +355,15 @@ class Sweep {
     static constexpr int kPrev[6] = {5, 0, 1, 2, 3, 4}, kNext[6] = {1, 2, 3, 4, 5, 0};
     const CartesianGrid& g = field_.grid();
     // Copies: adding entries below may move entry e.
-    const int s = entries_[e].label, y = entries_.node(e);
+    const int s = entries_[e].label(), y = entries_.node(e);
     const double a = entries_[e].time;
-    const int hop = entries_[e].hop + 1;
+    const int hop = entries_[e].hop() + 1;
     const int e_source = entries_[e].source;
     const double e_source_time = entries_[e].source_time;
     field_.for_each_reverse(original_[s], y, [&](int x, int k) {
       if constexpr (kDomain)
         if (!field_.inside(x)) return;
-      const int w = winner_[x];
+      const int w = entries_.winner(x);
       if (w >= 0 && (w == s || hop > kOwnTimeBand)) return;
       int target = entries_.find(x, s);
       if (target >= 0 && entries_[target].accepted()) return;
@@ -372,7 +371,7 @@ class Sweep {
         if (!field_.passable_step(original_[s], x, k)) return;
       if (target < 0) target = entries_.add(x, s);
       Entry& to = entries_[target];  // no entry is added below
-      to.hop = static_cast<std::uint8_t>(std::min<int>(to.hop, hop));
+      to.set_hop(std::min(to.hop(), hop));
       const int ix = x % g.nx, jx = x / g.nx;
       if constexpr (kStraight) {
         if (to.time < kInf) return;
@@ -437,9 +436,8 @@ class Sweep {
   std::vector<LatticeStencil> seed_stencil_;  ///< the seed metric's, for its Gram matrix
   std::vector<double> seed_clearance_;        ///< minus the domain's level set at the seed
   CrystalEntries entries_;
-  // Per node, the crystal of least accepted time so far (-1: none) and that
-  // time, apart: the updates read only the first.
-  HugeVector<int> winner_;
+  // Per node, the time of its winner (CrystalEntries::winner), apart: the
+  // updates read only the winner.
   HugeVector<double> winner_time_;
   std::vector<TimeHeap> queue_;  ///< per crystal, its pending entries
   double slab_;
@@ -454,6 +452,9 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
   const CartesianGrid& g = problem.grid;
   const int S = static_cast<int>(problem.seeds.cols());
   if (S == 0) throw Error("voronoi: no seeds");
+  if (S > CrystalEntry::kMaxCrystals)
+    throw Error("voronoi: " + std::to_string(S) + " seeds, more than the fast_marching engine's " +
+                std::to_string(CrystalEntry::kMaxCrystals));
   if (problem.contact == Contact::wet)
     throw Error("voronoi: the fast_marching engine meets the boundary dry only (use level_set)");
   const StencilField field(problem);
