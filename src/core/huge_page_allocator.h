@@ -4,7 +4,8 @@
 // to hundreds of MB on a 2000 x 2000 grid) at 2D neighbours, a grid row
 // apart, and with 4 KiB pages nearly every such read misses the TLB. Where
 // the kernel does not give huge pages on request (transparent_hugepage
-// "never"), or the array is small, it is an ordinary allocation.
+// "never"), or the array is small, it is an ordinary allocation (aligned to
+// a cache line).
 #include <cstddef>
 #include <cstdlib>
 #include <memory>
@@ -21,6 +22,8 @@ template <class T>
 struct HugePageAllocator {
   using value_type = T;
   static constexpr std::size_t kHuge = std::size_t{2} << 20;
+  /// Smaller arrays start on a cache line.
+  static constexpr std::size_t kLine = alignof(T) > 64 ? alignof(T) : 64;
 
   HugePageAllocator() = default;
   template <class U>
@@ -28,7 +31,8 @@ struct HugePageAllocator {
 
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
-    if (bytes < kHuge) return std::allocator<T>().allocate(n);
+    if (bytes < kHuge)
+      return static_cast<T*>(::operator new(bytes, std::align_val_t(kLine)));
     const std::size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
     void* p = std::aligned_alloc(kHuge, rounded);
     if (!p) throw std::bad_alloc();
@@ -39,7 +43,7 @@ struct HugePageAllocator {
   }
   void deallocate(T* p, std::size_t n) noexcept {
     if (n * sizeof(T) < kHuge)
-      std::allocator<T>().deallocate(p, n);
+      ::operator delete(p, std::align_val_t(kLine));
     else
       std::free(p);
   }

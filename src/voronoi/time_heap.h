@@ -8,21 +8,24 @@
 #include <utility>
 #include <vector>
 
+#include "core/huge_page_allocator.h"
+
 namespace homesh {
 
 class TimeHeap {
  public:
   using Item = std::pair<double, int>;
-  bool empty() const { return items_.empty(); }
-  std::size_t size() const { return items_.size(); }
+  bool empty() const { return items_.size() <= kPad; }
+  std::size_t size() const { return empty() ? 0 : items_.size() - kPad; }
   /// The item of least time; the heap must not be empty.
-  const Item& top() const { return items_.front(); }
+  const Item& top() const { return items_[kPad]; }
   void push(const Item& item) {
+    if (items_.empty()) items_.resize(kPad);
     std::size_t k = items_.size();
     items_.push_back(item);
-    while (k > 0 && item.first < items_[(k - 1) / 4].first) {
-      items_[k] = items_[(k - 1) / 4];
-      k = (k - 1) / 4;
+    while (k > kPad && item.first < items_[parent(k)].first) {
+      items_[k] = items_[parent(k)];
+      k = parent(k);
     }
     items_[k] = item;
   }
@@ -30,10 +33,10 @@ class TimeHeap {
   void pop() {
     const Item last = items_.back();
     items_.pop_back();
-    if (items_.empty()) return;
-    std::size_t k = 0;
+    if (empty()) return;
+    std::size_t k = kPad;
     for (;;) {
-      const std::size_t first = 4 * k + 1;
+      const std::size_t first = first_child(k);
       if (first >= items_.size()) break;
       std::size_t best = first;
       const std::size_t end = std::min(first + 4, items_.size());
@@ -46,10 +49,17 @@ class TimeHeap {
     items_[k] = last;
   }
   /// Drops every item and gives the memory back.
-  void release() { std::vector<Item>().swap(items_); }
+  void release() { HugeVector<Item>().swap(items_); }
 
  private:
-  std::vector<Item> items_;
+  // Heap position p (root 0, children 4p + 1 .. 4p + 4) is stored at
+  // items_[p + kPad]: the children of a node then sit at 4(p + 1) ..
+  // 4(p + 1) + 3, one 64-byte cache line of the line-aligned array.
+  static constexpr std::size_t kPad = 3;
+  static std::size_t parent(std::size_t k) { return (k - kPad - 1) / 4 + kPad; }
+  static std::size_t first_child(std::size_t k) { return 4 * (k - kPad) + 1 + kPad; }
+
+  HugeVector<Item> items_;
 };
 
 }  // namespace homesh
