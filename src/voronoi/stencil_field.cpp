@@ -20,8 +20,8 @@ StencilField::StencilField(const VoronoiProblem& problem)
   const CartesianGrid& g = grid_;
   const int n = g.node_count();
   if (has_domain()) {
-    inside_.resize(n);
-    for (int k = 0; k < n; ++k) inside_[k] = domain_(k) <= 0.0 ? kInside : 0;
+    flags_.resize(n);
+    for (int k = 0; k < n; ++k) flags_[k] = domain_(k) <= 0.0 ? kInside : 0;
   }
   const int S = static_cast<int>(problem.seeds.cols());
   if (!seed_metrics_.empty()) {
@@ -112,7 +112,7 @@ void StencilField::mask_steps() {
   const CartesianGrid& g = grid_;
   for (int j = 0, x = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i, ++x) {
-      if (!(inside_[x] & kInside)) continue;
+      if (!(flags_[x] & kInside)) continue;
       const LatticeStencil& st = stencil(0, x);
       // Far from the boundary every step lies in the disc of x's clearance.
       double reach2 = 0.0;
@@ -122,14 +122,14 @@ void StencilField::mask_steps() {
       }
       const double cx = clearance(x);
       if (cx >= 0.0 && cx * cx >= reach2) {
-        inside_[x] |= 0x3f;
+        flags_[x] |= 0x3f;
         continue;
       }
       for (int k = 0; k < 6; ++k) {
         const Eigen::Vector2i o = st.offset(k);
         const int a = i + o.x(), c = j + o.y();
         if (a >= 0 && c >= 0 && a < g.nx && c < g.ny && passable(x, g.index(a, c)))
-          inside_[x] |= static_cast<std::uint8_t>(1 << k);
+          flags_[x] |= static_cast<std::uint8_t>(1 << k);
       }
     }
   stepped_ = true;

@@ -31,7 +31,7 @@ class StencilField {
   /// A metric field that varies in space (stencils per node).
   bool varying() const { return !rev_start_.empty(); }
   /// domain <= 0 (or no domain): a node crystals may enter.
-  bool inside(int node) const { return inside_.empty() || (inside_[node] & kInside) != 0; }
+  bool inside(int node) const { return flags_.empty() || (flags_[node] & kInside) != 0; }
 
   /// The stencil crystal s uses at node x.
   const LatticeStencil& stencil(int s, int x) const {
@@ -69,14 +69,15 @@ class StencilField {
   /// Whether the segment between nodes x and z stays in the domain.
   bool passable(int x, int z) const;
   /// Whether the step from node x (inside) to x + offset k of crystal s's
-  /// stencil there stays in the domain: passable(x, that node), read from a
-  /// mask per node where all crystals share the stencil at x.
+  /// stencil there (a node of the grid) stays in the domain: passable(x,
+  /// that node), read from a mask per node where all crystals share the
+  /// stencil at x.
   bool passable_step(int s, int x, int k) const {
     if (!stepped_) {
       const Eigen::Vector2i o = stencil(s, x).offset(k);
       return passable(x, x + o.x() + o.y() * grid_.nx);
     }
-    return (inside_[x] >> k) & 1;
+    return (flags_[x] >> k) & 1;
   }
   /// Whether the segment pq, of Euclidean length `length`, stays in the
   /// domain: the clearances cp and cq of its ends add up to its length (the
@@ -103,8 +104,9 @@ class StencilField {
 
   CartesianGrid grid_;
   Eigen::VectorXd domain_;
-  /// Per node, kInside, and bit k: passable_step(x, k) (if stepped_).
-  HugeVector<std::uint8_t> inside_;
+  /// Per node (with a domain): kInside, and bit k for passable_step(., x, k)
+  /// if stepped_.
+  HugeVector<std::uint8_t> flags_;
   bool stepped_ = false;
   MetricField metric_;
   std::vector<Eigen::Matrix2d> seed_metrics_;
