@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "voronoi/loop_distance.h"
+#include "voronoi_test_support.h"
 
 using namespace homesh;
 
@@ -35,14 +35,7 @@ VoronoiProblem problem(Metric metric, bool hole) {
   } else {
     p.seed_metrics = {A, metric_from_axes(-0.4, 0.03, 0.01)};
   }
-  if (hole) {
-    Eigen::Matrix2Xd box(2, 4), circle(2, 48);
-    box << 0, 1, 1, 0, 0, 0, 1, 1;
-    for (int k = 0; k < 48; ++k)
-      circle.col(k) = Eigen::Vector2d(0.5, 0.5) + 0.2 * Eigen::Vector2d(std::cos(-2 * M_PI * k / 48),
-                                                                        std::sin(-2 * M_PI * k / 48));
-    p.domain = loop_signed_distance(p.grid, {box, circle}, 8 * p.grid.ds());
-  }
+  if (hole) p.domain = test::square_with_hole(p.grid, 48);
   return p;
 }
 

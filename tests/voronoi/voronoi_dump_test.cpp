@@ -29,10 +29,10 @@
 
 #include "thesis_examples.h"
 #include "voronoi/cgal_delaunay.h"
-#include "voronoi/loop_distance.h"
 #include "voronoi/refine_dual.h"
 #include "voronoi/voronoi_delaunay.h"
 #include "voronoi/voronoi_engines.h"
+#include "voronoi_test_support.h"
 
 using namespace homesh;
 
@@ -185,12 +185,7 @@ TEST_CASE("benchmark fast marching on the general path", "[.voronoi_bench_genera
   turning.metric = MetricField(coarse, M);
   cases.emplace_back("square_turning_metric", turning);
   VoronoiProblem holed = square;
-  Eigen::Matrix2Xd box(2, 4), hole(2, 64);
-  box << 0, 1, 1, 0, 0, 0, 1, 1;
-  for (int k = 0; k < 64; ++k)
-    hole.col(k) = Eigen::Vector2d(0.5, 0.5) + 0.2 * Eigen::Vector2d(std::cos(-2 * M_PI * k / 64),
-                                                                    std::sin(-2 * M_PI * k / 64));
-  holed.domain = loop_signed_distance(holed.grid, {box, hole}, 8 * holed.grid.ds());
+  holed.domain = test::square_with_hole(holed.grid, 64);
   Eigen::Matrix2Xd kept(2, 0);
   for (int s = 0; s < square.seeds.cols(); ++s)
     if ((square.seeds.col(s) - Eigen::Vector2d(0.5, 0.5)).norm() > 0.21) {

@@ -15,6 +15,7 @@
 
 #include "voronoi/cgal_delaunay.h"
 #include "voronoi/dual_triangulation.h"
+#include "voronoi/loop_distance.h"
 #include "voronoi/metric_field.h"
 
 namespace homesh::test {
@@ -28,6 +29,18 @@ inline Eigen::Matrix2Xd uniform_seeds(int count, unsigned seed, double lo, doubl
   for (int k = 0; k < count; ++k)
     for (int d = 0; d < 2; ++d) p(d, k) = lo + (hi - lo) * (gen() / 4294967296.0);
   return p;
+}
+
+/// The domain level set of the unit square with a hole of radius 0.2 at its
+/// centre (a polygon of `sides` sides), in a band of 8 cells, on grid g.
+inline Eigen::VectorXd square_with_hole(const CartesianGrid& g, int sides) {
+  Eigen::Matrix2Xd box(2, 4), hole(2, sides);
+  box << 0, 1, 1, 0, 0, 0, 1, 1;
+  for (int k = 0; k < sides; ++k) {
+    const double a = -2 * M_PI * k / sides;  // clockwise: a hole
+    hole.col(k) = Eigen::Vector2d(0.5, 0.5) + 0.2 * Eigen::Vector2d(std::cos(a), std::sin(a));
+  }
+  return loop_signed_distance(g, {box, hole}, 8 * g.ds());
 }
 
 inline Eigen::Vector2d circumcentre(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
