@@ -32,7 +32,8 @@ def main():
     print(f"grid {grid} x {grid}")
     print(f"{'method':<14}{'seeds':>8}{'seconds':>10}{'Mnodes/s':>10}{'triangles':>11}"
           f"{'of CGAL':>9}")
-    for m in methods:
+    for k, m in enumerate(methods):
+        colour = f"C{k}"  # one colour per method in both panels
         pts = sorted((int(r["seeds"]), float(r["seconds"]), int(r["triangles"]),
                       int(r["matching"]), int(r["cgal_in_square"]))
                      for r in rows if r["method"] == m)
@@ -48,9 +49,9 @@ def main():
             p = np.polyfit(np.log(s[fit]), np.log(t[fit]), 1)[0]
             label += f" (time ~ S^{p:.2f})"
             print(f"{m}: time ~ S^{p:.2f} over S = {int(s[fit].min())}..{int(s[fit].max())}")
-        times.loglog(s, t, "o-", label=label)
+        times.loglog(s, t, "o-", color=colour, label=label)
         if m != "cgal":
-            share.semilogx(s, [p[3] / max(p[4], 1) for p in pts], "o-", label=m)
+            share.semilogx(s, [p[3] / max(p[4], 1) for p in pts], "o-", color=colour, label=m)
     times.set_xlabel("seeds S")
     times.set_ylabel("CPU seconds")
     times.set_title(f"crystal growth on a {grid} x {grid} grid vs CGAL Delaunay")
