@@ -31,8 +31,7 @@ struct HugePageAllocator {
 
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
-    if (bytes < kHuge)
-      return static_cast<T*>(::operator new(bytes, std::align_val_t(kLine)));
+    if (bytes < kHuge) return static_cast<T*>(::operator new(bytes, std::align_val_t(kLine)));
     const std::size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
     void* p = std::aligned_alloc(kHuge, rounded);
     if (!p) throw std::bad_alloc();

@@ -1,8 +1,8 @@
 #include "voronoi/time_heap.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
-#include <algorithm>
 #include <random>
 #include <vector>
 
