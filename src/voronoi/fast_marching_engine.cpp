@@ -72,7 +72,6 @@ class Sweep {
         seed_stencil_(M.size()),
         seed_clearance_(M.size()),
         entries_(field.grid().node_count()),
-        winner_time_(field.grid().node_count(), kInf),
         queue_(seeds.cols()),
         slab_(slab_width(field.grid(), M)),
         block_(std::max<long>(1, kBlockNodes * seeds.cols() / field.grid().node_count())) {
@@ -174,7 +173,7 @@ class Sweep {
     const auto offer = [&](int x) {
       const int i = x % g.nx, j = x / g.nx;
       const int from = entries_.winner(x);
-      const double from_time = winner_time_[x];
+      const double from_time = time(x);
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int a = i + di, b = j + dj;
@@ -204,7 +203,6 @@ class Sweep {
       en.accept();
       en.set_hop(0);
       entries_.winner(x) = en.label();
-      winner_time_[x] = t;
       offer(x);
     }
   }
@@ -224,7 +222,10 @@ class Sweep {
     const int c = entries_.winner(x);
     return c < 0 ? -1 : original_[c];
   }
-  double time(int x) const { return winner_time_[x]; }
+  double time(int x) const {
+    const int c = entries_.winner(x);
+    return c < 0 ? kInf : entries_[entries_.find(x, c)].time;
+  }
 
  private:
   // Accepts the entries of one crystal's heap below time `end`; false once
@@ -242,10 +243,11 @@ class Sweep {
       en.accept();
       ++steps_;
       const int x = entries_.node(e);
-      int& w = entries_.winner(x);
-      if (w < 0 || t < winner_time_[x] || (t == winner_time_[x] && en.label() < w)) {
-        w = en.label();
-        winner_time_[x] = t;
+      // The node's winner so far, if any, holds an accepted (final) entry.
+      const int w = entries_.winner(x);
+      const double held = w < 0 ? kInf : time(x);
+      if (w < 0 || t < held || (t == held && en.label() < w)) {
+        entries_.winner(x) = en.label();
         en.set_hop(0);
       }
       if (en.hop() < kOwnTimeBand) (this->*spread_)(e);
@@ -438,10 +440,9 @@ class Sweep {
   std::vector<Eigen::Matrix2d> seed_metric_;
   std::vector<LatticeStencil> seed_stencil_;  ///< the seed metric's, for its Gram matrix
   std::vector<double> seed_clearance_;        ///< minus the domain's level set at the seed
+  // Per node, its crystals' entries and the winner (its time: the winner's
+  // accepted entry's).
   CrystalEntries entries_;
-  // Per node, the time of its winner (CrystalEntries::winner), apart: the
-  // updates read only the winner.
-  HugeVector<double> winner_time_;
   std::vector<TimeHeap> queue_;  ///< per crystal, its pending entries
   double slab_;
   long block_;  ///< crystals per block
