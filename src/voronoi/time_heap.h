@@ -38,11 +38,18 @@ class TimeHeap {
     for (;;) {
       const std::size_t first = first_child(k);
       if (first >= items_.size()) break;
+      // The least child, by selects rather than branches (which child is
+      // least is a coin toss the branch predictor loses).
       std::size_t best = first;
+      double least = items_[first].first;
       const std::size_t end = std::min(first + 4, items_.size());
-      for (std::size_t c = first + 1; c < end; ++c)
-        if (items_[c].first < items_[best].first) best = c;
-      if (!(items_[best].first < last.first)) break;
+      for (std::size_t c = first + 1; c < end; ++c) {
+        const double t = items_[c].first;
+        const bool less = t < least;
+        best = less ? c : best;
+        least = less ? t : least;
+      }
+      if (!(least < last.first)) break;
       items_[k] = items_[best];
       k = best;
     }
