@@ -10,8 +10,9 @@
 namespace homesh {
 namespace {
 
-constexpr double kPoor = 0.8;     // below this worst quality, the compass search too
-constexpr int kSearchSteps = 24;  // its steps
+constexpr double kPoor = 0.8;              // below this worst quality, the compass search too
+constexpr int kSearchSteps = 24;           // compass search: at most this many steps
+constexpr double kSearchTolerance = 1e-3;  // and until the step is this fraction of the first
 
 }  // namespace
 
@@ -31,16 +32,40 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
   for (Eigen::Index t = 0; t < tri.cols(); ++t)
     for (int k = 0; k < 3; ++k)
       star[tri(k, t)].push_back({tri((k + 1) % 3, t), tri((k + 2) % 3, t)});
-  // Worst and summed quality of v's triangles with v at p.
+  // Worst quality of v's triangles with v at p, and the sum of their
+  // inverse qualities (infinite once one folds or degenerates).
+  struct Patch {
+    double worst, inverse;
+  };
   const auto patch = [&](const std::vector<std::array<int, 2>>& s, const Eigen::Vector2d& p,
                          const Eigen::Matrix2d& M) {
-    double worst = std::numeric_limits<double>::infinity(), sum = 0.0;
+    Patch out{std::numeric_limits<double>::infinity(), 0.0};
     for (const auto& [a, b] : s) {
       const double q = metric_mean_ratio(p, x.col(a), x.col(b), M);
-      worst = std::min(worst, q);
-      sum += q;
+      out.worst = std::min(out.worst, q);
+      out.inverse += q > 0.0 ? 1.0 / q : std::numeric_limits<double>::infinity();
     }
-    return std::pair<double, double>{worst, sum};
+    return out;
+  };
+  // Compass search from `to`: the 8 steps of length h round the best point so
+  // far, h halved on failure, until h is `stop` or kSearchSteps halvings.
+  const auto compass = [&](const std::vector<std::array<int, 2>>& s, const Eigen::Matrix2d& M,
+                           double h, Eigen::Vector2d& to, Patch& best, auto better) {
+    const double stop = h * kSearchTolerance;
+    for (int k = 0; k < kSearchSteps && h > stop; ++k) {
+      bool moved = false;
+      for (int d = 0; d < 8; ++d) {
+        const Eigen::Vector2d c =
+            to + h * Eigen::Vector2d(std::cos(M_PI * d / 4), std::sin(M_PI * d / 4));
+        const Patch q = patch(s, c, M);
+        if (better(q, best)) {
+          best = q;
+          to = c;
+          moved = true;
+        }
+      }
+      if (!moved) h *= 0.5;
+    }
   };
   int moves = 0;
   for (int sweep = 0; sweep < sweeps; ++sweep)
@@ -62,34 +87,30 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       }
       laplace /= static_cast<double>(s.size());
       apex /= static_cast<double>(s.size());
-      auto best = patch(s, p, M);
+      Patch best = patch(s, p, M);
+      // No worse worst triangle, and a smaller sum of inverse qualities.
+      const auto smaller_sum = [](double floor) {
+        return [floor](const Patch& q, const Patch& b) {
+          return q.worst >= floor && q.inverse < b.inverse * (1 - 1e-12);
+        };
+      };
       Eigen::Vector2d to = p;
       for (const Eigen::Vector2d& c : {laplace, apex}) {
-        const auto q = patch(s, c, M);
-        if (q.first >= best.first && q.second > best.second + 1e-12) {
+        const Patch q = patch(s, c, M);
+        if (smaller_sum(best.worst)(q, best)) {
           best = q;
           to = c;
         }
       }
-      // Where the worst triangle stays poor, compass search on it: the 8
-      // steps of length h round the best point so far, h halved on failure.
-      if (best.first < kPoor) {
-        double h = 0.25 * std::sqrt((x.col(s.front()[0]) - p).squaredNorm());
-        for (int k = 0; k < kSearchSteps; ++k) {
-          bool better = false;
-          for (int d = 0; d < 8; ++d) {
-            const Eigen::Vector2d c =
-                to + h * Eigen::Vector2d(std::cos(M_PI * d / 4), std::sin(M_PI * d / 4));
-            const auto q = patch(s, c, M);
-            if (q.first > best.first + 1e-12) {
-              best = q;
-              to = c;
-              better = true;
-            }
-          }
-          if (!better) h *= 0.5;
-        }
-      }
+      const double h = 0.25 * std::sqrt((x.col(s.front()[0]) - p).squaredNorm());
+      // Where the worst triangle stays poor, raise it first.
+      if (best.worst < kPoor)
+        compass(s, M, h, to, best,
+                [](const Patch& q, const Patch& b) { return q.worst > b.worst + 1e-12; });
+      // Then the sum of inverse qualities (Knupp's inverse mean ratio), the
+      // worst triangle kept no worse: the star's optimum, where the fixed
+      // candidates above only come near it.
+      compass(s, M, h, to, best, smaller_sum(best.worst));
       if (to != p) {
         x.col(v) = to;
         ++moves;

@@ -1,9 +1,9 @@
 #pragma once
 // Smart smoothing of the free nodes of a linear triangle mesh in a metric,
-// a cheap last step after the dual triangulation: each free node v tries the
-// positions below and takes the best, only if the worst triangle round it gets
-// no worse and their mean gets better (Freitag, "On combining Laplacian and
-// optimization-based mesh smoothing techniques", AMD 220, 1997):
+// a cheap last step after the dual triangulation (Freitag, "On combining
+// Laplacian and optimization-based mesh smoothing techniques", AMD 220, 1997).
+// Each free node v tries the positions below and takes a better one, never
+// letting the worst triangle round it get worse:
 //
 //  - Laplacian: the mean of its neighbours;
 //  - ideal apexes: the mean over its triangles (v, a, b) of the point that
@@ -13,7 +13,13 @@
 //    one-step form, "The geometric element transformation method for mixed
 //    mesh smoothing", Eng Comput 25, 2009);
 //  - where its worst triangle stays below 0.8: a compass search (8
-//    directions, step halved on failure) for the largest worst quality.
+//    directions, step halved on failure) for the largest worst quality;
+//  - then a compass search for the smallest sum of inverse qualities
+//    sum 1/q over its triangles (Knupp's inverse mean ratio objective,
+//    "Achieving finite element mesh quality via optimization of the Jacobian
+//    matrix norm and associated quantities", IJNME 48, 2000), the worst
+//    triangle kept no worse: the star's local optimum, which the two fixed
+//    candidates only come near. Candidates are taken by the same rule.
 //
 // Quality is the mean ratio in M, q = 4 sqrt(3) A sqrt(det M) / sum |e|_M^2
 // (1 for a triangle equilateral in M, 0 degenerate; equal to Q11 for linear
