@@ -38,9 +38,10 @@ using Clock = std::chrono::steady_clock;
 constexpr int kCurveSamples = 2000;    // fine samples per boundary curve
 constexpr double kCellsPerSize = 6.0;  // automatic grid: smallest size over this many cells
 constexpr int kGridMin = 200, kGridMax = 1500;
-constexpr int kCoarseMax = 400;     // coarse metric grid nodes along the longer side, at most
-constexpr double kBandCells = 8.0;  // the domain's distance is exact this many cells out
+constexpr int kCoarseMax = 400;      // coarse metric grid nodes along the longer side, at most
+constexpr double kBandCells = 8.0;   // the domain's distance is exact this many cells out
 constexpr int kLloydCoarsening = 2;  // Lloyd's iteration on a grid this many times coarser
+constexpr int kAllRows = 1000;       // front=all: rows until the fronts meet
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -129,8 +130,7 @@ MetricField make_metric(const std::string& metric, const Mesh& reference, const 
   const int n = std::clamp(static_cast<int>(std::ceil((hi - lo).maxCoeff() / (0.5 * h_min))) + 1,
                            16, kCoarseMax);
   const CartesianGrid coarse = grid_over(lo, hi, n, 1);
-  if (view)
-    return gmsh_adapter::metric_from_view(gmsh_adapter::metric_view_tag(metric), coarse);
+  if (view) return gmsh_adapter::metric_from_view(gmsh_adapter::metric_view_tag(metric), coarse);
   const MetricField iso = iso_metric_from_sizes(coarse, reference.x, h, tri);
   if (metric == "iso") return iso;
   std::vector<Eigen::Matrix2Xd> polylines;
@@ -178,6 +178,14 @@ void run(Context& ctx, const Options& opt) {
   const int grid_option = opt.get_int("grid", 0, 20000);
   const int lloyd = opt.get_int("lloyd", 0, 100);
   const int smooth = opt.get_int("smooth", 0, 100);
+  int front_rows = kAllRows;
+  if (opt.get_string("front") != "all") {
+    try {
+      front_rows = opt.get_int("front", 0, kAllRows);
+    } catch (const Error& e) {
+      throw Error(std::string(e.what()) + " (front is 'all' or a number of rows)");
+    }
+  }
   if (grid_option > 0 && grid_option < 32)
     throw Error("stage 'voronoi': option grid must be 0 (automatic) or at least 32");
   try {
@@ -256,13 +264,30 @@ void run(Context& ctx, const Options& opt) {
     Eigen::Matrix2Xd bseeds(2, static_cast<Eigen::Index>(local_to_node.size()));
     for (std::size_t k = 0; k < local_to_node.size(); ++k)
       bseeds.col(k) = boundary.seeds.col(local_to_node[k]);
+    std::vector<std::array<int, 2>> segments;
+    for (const auto& [a, b] : loops.segments)
+      segments.push_back({node_to_local[a], node_to_local[b]});
     const auto seeding = Clock::now();
+    // Automatic seeds: the front rows advancing from the boundary segments,
+    // then Poisson-disc seeds spaced from both where the fronts meet.
+    const bool auto_seeds = seeds_name == "auto";
+    SeedingOptions so;
+    so.front_rows = front_rows;
+    const FrontSeeds front =
+        auto_seeds ? metric_front_seeds(p.grid, p.domain, metric, bseeds, segments, so)
+                   : FrontSeeds{};
+    const Eigen::Matrix2Xd& front_seeds = front.seeds;
+    Eigen::Matrix2Xd held(2, bseeds.cols() + front_seeds.cols());
+    held << bseeds, front_seeds;
+    // Lloyd's iteration holds the first row (and the corner seeds) and
+    // relaxes the others where the fronts meet; rows are its fixed points
+    // elsewhere, but the collisions need it.
+    const Eigen::Index hold = bseeds.cols() + front.first_row;
     const Eigen::Matrix2Xd interior =
-        seeds_name == "auto"
-            ? metric_interior_seeds(p.grid, p.domain, metric, bseeds)
-            : file_seeds(seeds_name, list, loops, p.grid, p.domain, bseeds, list_used);
-    p.seeds.resize(2, bseeds.cols() + interior.cols());
-    p.seeds << bseeds, interior;
+        auto_seeds ? metric_interior_seeds(p.grid, p.domain, metric, held)
+                   : file_seeds(seeds_name, list, loops, p.grid, p.domain, bseeds, list_used);
+    p.seeds.resize(2, held.cols() + interior.cols());
+    p.seeds << held, interior;
     Progress phase("phase", 3);
     if (seeds_name == "auto" && lloyd > 0) {
       phase.update(0, "Lloyd's iteration on the seeds");
@@ -274,15 +299,12 @@ void run(Context& ctx, const Options& opt) {
           loop_signed_distance(coarse.grid, loops.polygons, kBandCells * coarse.grid.ds());
       LloydOptions o;
       o.iterations = lloyd;
-      p.seeds = lloyd_relaxation(coarse, static_cast<int>(bseeds.cols()), engine, o);
+      p.seeds = lloyd_relaxation(coarse, static_cast<int>(hold), engine, o);
     }
-    std::vector<std::array<int, 2>> segments;
-    for (const auto& [a, b] : loops.segments)
-      segments.push_back({node_to_local[a], node_to_local[b]});
     // Automatic seeds inside a boundary segment's diametral circle go: that
     // segment could be in no dual.
     std::vector<int> encroaching;
-    if (seeds_name == "auto") {
+    if (auto_seeds) {
       encroaching = encroaching_seeds(p.seeds, static_cast<int>(bseeds.cols()), segments);
       std::vector<int> keep;
       for (int k = 0, e = 0; k < p.seeds.cols(); ++k)
@@ -292,7 +314,10 @@ void run(Context& ctx, const Options& opt) {
           keep.push_back(k);
       p.seeds = Eigen::Matrix2Xd(p.seeds(Eigen::all, keep));
     }
-    const Eigen::Index interior_count = p.seeds.cols() - bseeds.cols();
+    const auto front_count = static_cast<Eigen::Index>(
+        front_seeds.cols() - std::count_if(encroaching.begin(), encroaching.end(),
+                                           [&](int k) { return k < held.cols(); }));
+    const Eigen::Index interior_count = p.seeds.cols() - bseeds.cols() - front_count;
     const double seeding_time = seconds_since(seeding);
 
     phase.update(1, "growing " + std::to_string(p.seeds.cols()) + " crystals");
@@ -315,9 +340,9 @@ void run(Context& ctx, const Options& opt) {
     int added = 0;
     for (const int a : r.added) added += a;
     ctx.log.info(
-        "voronoi: surface {}: grid {} x {} (ds {:.4g}), {} boundary + {} interior seeds ({}, "
-        "{:.2f} s), engine {} {:.2f} s",
-        surface.tag, p.grid.nx, p.grid.ny, p.grid.ds(), bseeds.cols(), interior_count,
+        "voronoi: surface {}: grid {} x {} (ds {:.4g}), {} boundary + {} front + {} interior "
+        "seeds ({}, {:.2f} s), engine {} {:.2f} s",
+        surface.tag, p.grid.nx, p.grid.ny, p.grid.ds(), bseeds.cols(), front_count, interior_count,
         seeds_name != "auto"
             ? seeds_name
             : fmt::format("Poisson-disc in the metric, {} Lloyd iterations, {} encroaching "
@@ -427,16 +452,24 @@ Stage voronoi_stage() {
             "e.g. merged by the .geo) | FILE.pos or FILE.msh (its last view, a tensor field) "
             "| FILE (a coarse grid of 2x2 SPD tensors, format in src/voronoi/voronoi_files.h)"},
            {"seeds", "auto",
-            "auto (Poisson-disc in the metric) | FILE (interior seeds, one 'x y' per line; the "
+            "auto (front rows, then Poisson-disc in the metric) | FILE (interior seeds, one 'x y' "
+            "per line; the "
             "boundary seeds are placed from the metric)"},
-           {"lloyd", "5",
-            "Lloyd iterations on the auto seeds: each interior seed moves to the metric "
-            "centroid of its region (0: none)"},
+           {"front", "all",
+            "with auto seeds: rows of seeds advancing from the boundary, each at the apexes of "
+            "the unit triangles (in the metric) on the row before (Rebay's frontal placement), "
+            "and a seed splitting each corner of 75-140 degrees; Poisson-disc seeds fill where "
+            "the fronts meet, Lloyd's iteration holds the first row | N: N rows | 0: none, "
+            "Poisson-disc seeds only"},
+           {"lloyd", "10",
+            "Lloyd iterations on the auto seeds: each interior seed but the first front row "
+            "moves to the metric centroid of its region (0: none)"},
            {"smooth", "3",
             "sweeps of smart smoothing of the interior nodes after the dual (Laplacian or "
-            "ideal-apex position, compass search where a triangle stays below 0.8; a move is kept "
-            "only if the worst triangle round the node gets no worse in the metric; the "
-            "connectivity stays the dual's; 0: none)"},
+            "ideal-apex position, then compass searches: on the worst triangle where it stays "
+            "below 0.8, on the sum of inverse mean ratios; a move is kept only if the worst "
+            "triangle round the node gets no worse in the metric; the connectivity stays the "
+            "dual's; 0: none)"},
            {"engine", "fast_marching", "fast_marching | level_set"},
            {"grid", "0",
             "grid nodes along the longer side (0: the smallest size over 6 cells, 200 to 1500)"}},
