@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -20,13 +19,7 @@ StudyOutput::StudyOutput(std::string folder) : folder_(std::move(folder)) {
 std::string StudyOutput::path(const std::string& name) const { return folder_ + "/" + name; }
 
 void StudyOutput::write(const std::string& name, const std::string& text) const {
-  AtomicFile file(path(name));
-  {
-    std::ofstream out(file.temp_path());
-    out << text;
-    if (!out) throw Error("cannot write " + file.target());
-  }
-  file.commit();
+  write_file_atomically(path(name), text);
 }
 
 std::string number(double value) {
