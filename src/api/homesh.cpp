@@ -4,6 +4,7 @@
 
 #include "core/progress.h"
 #include "gmsh/gmsh_call.h"
+#include "gmsh/option_scope.h"
 #include "gmsh/read_model.h"
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
@@ -17,16 +18,35 @@ namespace homesh::api {
 namespace {
 
 bool quiet_ = false;
+LogSink sink_;
+
+// The stages' log as the caller set it up: set_quiet, the sink, and Gmsh's
+// General.Verbosity (below 4: no info; below 2: no warnings either), as
+// Gmsh's own messages follow it.
+void configure_log(Log& log) {
+  double verbosity = 5;
+  gmsh::option::getNumber("General.Verbosity", verbosity);
+  log.quiet = quiet_ || verbosity < 4;
+  log.silent = verbosity < 2;
+  if (sink_)
+    log.sink = [](LogLevel level, const std::string& text) {
+      sink_(level == LogLevel::Info ? 0 : 1, text);
+    };
+}
 
 Validity summary(const Mesh& m) {
   const MeshValidity v = mesh_validity(m);
   return {m.num_triangles(), v.invalid, v.worst, v.worst_element + 1, validity_line(m, v)};
 }
 
-// Runs `body`, Gmsh's own std::string throws turned into homesh::Error as the CLI reports them.
+// Runs `body`, Gmsh's own std::string throws turned into homesh::Error as the
+// CLI reports them. Gmsh errors are logged, not thrown, meanwhile: a throw
+// from inside one of Gmsh's OpenMP regions would abort the user's process.
 template <typename Body>
 auto guarded(Body body) {
   try {
+    gmsh_adapter::OptionScope options;
+    options.set("General.AbortOnError", 0);
     return body();
   } catch (const std::string& e) {
     throw Error("Gmsh: " + e);
@@ -51,10 +71,10 @@ Result run(const std::string& name, const StageOptions& options) {
     const Options checked(s.name, s.options, options);
     Context ctx;
     ctx.input = "the current Gmsh model";
-    ctx.log.quiet = quiet_;
+    configure_log(ctx.log);
     ctx.has_cad = gmsh_adapter::model_has_cad();
     if (gmsh_adapter::model_has_mesh()) ctx.mesh = gmsh_adapter::read_model(ctx.input);
-    set_progress(progress_wanted(quiet_));
+    set_progress(progress_wanted(ctx.log.quiet));
     {
       const Progress label(s.name, 0);
       s.run(ctx, checked);
@@ -92,14 +112,24 @@ Validity validity() {
   });
 }
 
-void write(const std::string& path, const std::string& provenance) {
+void write(const std::string& path, const std::string& provenance, bool keep_invalid) {
   guarded([&] {
+    gmsh_adapter::check_msh_path(path);
+    // Every output carries its certified validity; an invalid mesh is never written silently.
+    const std::string source = "the current Gmsh model";
+    if (!gmsh_adapter::model_has_mesh()) throw Error(source + ": has no triangles (no 2D mesh)");
+    const Validity v = summary(gmsh_adapter::read_model(source));
+    if (v.invalid > 0 && !keep_invalid)
+      throw Error(path + ": not written: " + std::to_string(v.invalid) +
+                  " triangles are not certified valid (keep them with keep_invalid)");
     std::vector<int> views;
     gmsh::view::getTags(views);
-    gmsh_adapter::write_msh(path, views, provenance);
+    gmsh_adapter::write_msh(path, views, provenance + "\n" + v.line);
   });
 }
 
 void set_quiet(bool quiet) { quiet_ = quiet; }
+
+void set_log_sink(LogSink sink) { sink_ = std::move(sink); }
 
 }  // namespace homesh::api

@@ -17,6 +17,7 @@
 // as on the command line ({"nu", "0.45"}, {"measures", "Q4,Q17"}). Every
 // failure throws homesh::Error with the CLI's message (Gmsh's own errors as
 // "Gmsh: ...").
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -87,12 +88,23 @@ Result voronoi(const StageOptions& options = {});
 /// Certified validity of the current model's mesh.
 Validity validity();
 
-/// Writes the current model's mesh and all its views to `path` (MSH 4.1,
-/// atomically) with the `.opt` sidecar that displays curved fields curved;
-/// `provenance` (e.g. the program's command line) is recorded in the file.
-void write(const std::string& path, const std::string& provenance = "homesh C++ API");
+/// Certifies the current model's mesh, then writes it and all its views to
+/// `path` (a `.msh`, in the MSH version and encoding set in Gmsh's options,
+/// atomically, every write checked) with the `.opt` sidecar that displays
+/// curved fields curved; `provenance` (e.g. the program's command line) and
+/// the validity line are recorded in the file. Throws homesh::Error and
+/// writes nothing if a triangle is not certified valid, unless `keep_invalid`.
+void write(const std::string& path, const std::string& provenance = "homesh C++ API",
+           bool keep_invalid = false);
 
 /// Silences the stages' reports on stdout (warnings stay) and progress.
+/// Gmsh's General.Verbosity is followed as well: below 4 no reports, below 2
+/// no warnings either.
 void set_quiet(bool quiet = true);
+
+/// Where the stages' messages go: `level` 0 for reports, 1 for warnings. An
+/// empty sink (the default) prints reports on stdout and warnings on stderr.
+using LogSink = std::function<void(int level, const std::string& text)>;
+void set_log_sink(LogSink sink);
 
 }  // namespace homesh::api

@@ -2,13 +2,31 @@
 
 #include <gmsh.h>
 
-#include <fstream>
-
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "gmsh/gmsh_call.h"
+#include "gmsh/option_scope.h"
 
 namespace homesh::gmsh_adapter {
+namespace {
+
+// Throws unless what Gmsh has written so far (`before` bytes earlier, now
+// more) ends with a complete section: Gmsh ignores its own write errors, so a
+// full disk or a file-size limit shows as a file cut short.
+void check_section_written(const AtomicFile& file, std::uint64_t before, const std::string& what) {
+  const std::uint64_t size = file.size();
+  const std::string head = file.read(0, 12);
+  const std::size_t tail_length = 40;
+  const std::string tail = file.read(size > tail_length ? size - tail_length : 0, tail_length);
+  const auto end = tail.rfind("\n$End");
+  const bool whole = size > before && head == "$MeshFormat\n" && end != std::string::npos &&
+                     tail.back() == '\n' && tail.find('\n', end + 1) == tail.size() - 1;
+  if (!whole)
+    throw Error("cannot write '" + file.target() + "': Gmsh's " + what + " is incomplete (" +
+                std::to_string(size) + " bytes; is the disk full or a file size limit set?)");
+}
+
+}  // namespace
 
 std::string sidecar_options(int num_views) {
   std::string s =
@@ -23,28 +41,43 @@ std::string sidecar_options(int num_views) {
   return s;
 }
 
+void check_msh_path(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash)
+                        ? ""
+                        : path.substr(dot);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".msh")
+    throw Error(path + ": homesh writes .msh files only (MSH 2.2 or 4.1, as Gmsh's option " +
+                "Mesh.MshFileVersion says); got '" + (ext.empty() ? "no extension" : ext) + "'");
+  AtomicFile::check_target(path);
+}
+
 void write_msh(const std::string& path, const std::vector<int>& view_tags,
                const std::string& provenance) {
+  check_msh_path(path);
+  double version = 4.1;
+  gmsh::option::getNumber("Mesh.MshFileVersion", version);
+  if (!((version >= 2 && version < 3) || (version >= 4.1 && version < 5)))
+    throw Error(path + ": homesh writes MSH 2.2 or 4.1, but Gmsh's option Mesh.MshFileVersion is " +
+                std::to_string(version));
   AtomicFile msh(path);
   AtomicFile opt(path + ".opt");
   gmsh_call("cannot write '" + path + "'", [&] {
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::option::setNumber("Mesh.Binary", 0);
-    gmsh::option::setNumber("Mesh.SaveAll", 1);
+    OptionScope options;  // the user's MshFileVersion and Binary are kept, as Gmsh's own write does
+    options.set("Mesh.SaveAll", 1);
     gmsh::write(msh.temp_path());
-    gmsh::option::setNumber("PostProcessing.SaveMesh", 0);
-    for (int v : view_tags) gmsh::view::write(v, msh.temp_path(), true);
+    check_section_written(msh, 0, "mesh");
+    options.set("PostProcessing.SaveMesh", 0);
+    for (int v : view_tags) {
+      const std::uint64_t before = msh.size();
+      gmsh::view::write(v, msh.temp_path(), true);
+      check_section_written(msh, before, "view " + std::to_string(v));
+    }
   });
-  {
-    std::ofstream out(msh.temp_path(), std::ios::app);
-    out << "$HomeshProvenance\n" << provenance << "\n$EndHomeshProvenance\n";
-    if (!out) throw Error("cannot write '" + path + "'");
-  }
-  {
-    std::ofstream out(opt.temp_path());
-    out << sidecar_options(static_cast<int>(view_tags.size()));
-    if (!out) throw Error("cannot write '" + path + ".opt'");
-  }
+  msh.append("$HomeshProvenance\n" + provenance + "\n$EndHomeshProvenance\n");
+  opt.append(sidecar_options(static_cast<int>(view_tags.size())));
   msh.commit();
   opt.commit();
 }

@@ -1,5 +1,5 @@
 #pragma once
-// `.msh` output: the current model's mesh and the given views in one MSH 4.1
+// `.msh` output: the current model's mesh and the given views in one MSH
 // file, the homesh command line recorded in it, and a sidecar `PATH.opt` that
 // Gmsh merges when it opens PATH, so curved fields display curved.
 #include <string>
@@ -9,10 +9,19 @@ namespace homesh::gmsh_adapter {
 
 /// Writes the current model's mesh (all elements, physical groups kept) to
 /// `path`, then each view of `view_tags` appended, then a `$HomeshProvenance`
-/// section holding `provenance` (Gmsh skips unknown sections). Both `path` and
-/// `path.opt` are written atomically. Throws homesh::Error naming `path`.
+/// section holding `provenance` (Gmsh skips unknown sections), in the MSH
+/// version and encoding the user chose in Gmsh (Mesh.MshFileVersion 2.2 or
+/// 4.1, Mesh.Binary); the Gmsh options it sets to write are restored. Both
+/// `path` and `path.opt` are written atomically, each of Gmsh's sections
+/// verified complete and every write, fsync, close and rename checked. Throws
+/// homesh::Error naming `path` and the cause; the previous files are then
+/// untouched.
 void write_msh(const std::string& path, const std::vector<int>& view_tags,
                const std::string& provenance);
+
+/// Throws homesh::Error naming `path` unless it ends in `.msh` and can be
+/// written (AtomicFile::check_target): for checking an output before any work.
+void check_msh_path(const std::string& path);
 
 /// The sidecar options text for a file holding `num_views` views.
 std::string sidecar_options(int num_views);

@@ -49,11 +49,11 @@ py::dict run_stage(const std::string& name, const py::kwargs& kwargs) {
   return result;
 }
 
-void write_file(const std::string& path) {
+void write_file(const std::string& path, bool keep_invalid) {
   const auto argv = py::module_::import("sys").attr("argv").cast<std::vector<std::string>>();
   std::string line = "python3";
   for (const auto& a : argv) line += " " + a;
-  api::write(path, "homesh (Python)\n" + line);
+  api::write(path, "homesh (Python)\n" + line, keep_invalid);
 }
 
 }  // namespace
@@ -71,13 +71,28 @@ PYBIND11_MODULE(homesh, m) {
     }
   });
 
+  // homesh's messages reach Python: the "homesh" logger where logging is set
+  // up (a handler on it or an ancestor), else sys.stdout / sys.stderr, so that
+  // contextlib.redirect_stdout and notebooks capture them.
+  api::set_log_sink([](int level, const std::string& text) {
+    py::gil_scoped_acquire gil;
+    const py::object logger = py::module_::import("logging").attr("getLogger")("homesh");
+    if (logger.attr("hasHandlers")().cast<bool>()) {
+      logger.attr("log")(level == 0 ? 20 : 30, text);  // logging.INFO, logging.WARNING
+    } else {
+      const py::object sys = py::module_::import("sys");
+      const py::object stream = sys.attr(level == 0 ? "stdout" : "stderr");
+      stream.attr("write")((level == 0 ? "" : "homesh: warning: ") + text + "\n");
+    }
+  });
   m.def("run", &run_stage, py::arg("stage"),
         "Run a stage (see stages()) on the current Gmsh model, options as keyword arguments; "
         "returns order, node and triangle counts, the tags of the views it added, the numbers "
         "the stage reports (results) and the mesh's certified validity (see validity()).");
-  m.def("write", &write_file, py::arg("path"),
-        "Write the current model's mesh and views to a MSH 4.1 file (atomically) with its .opt "
-        "sidecar.");
+  m.def("write", &write_file, py::arg("path"), py::arg("keep_invalid") = false,
+        "Certify the current model's mesh, then write it and its views to a .msh file (the MSH "
+        "version and encoding of Gmsh's options, atomically) with its .opt sidecar; refuses a mesh "
+        "not certified valid unless keep_invalid.");
   m.def("set_quiet", &api::set_quiet, py::arg("quiet") = true,
         "Silence homesh's reports and progress (warnings stay).");
   m.def("validity", [] { return validity_dict(api::validity()); },

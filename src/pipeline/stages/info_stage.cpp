@@ -9,21 +9,21 @@ const char* dim_name(int dim) { return dim == 0 ? "point" : dim == 1 ? "curve" :
 
 void run(Context& ctx, const Options&) {
   const Mesh& m = ctx.require_mesh("info");
-  ctx.log.info("info: {} (CAD: {})", ctx.input, ctx.has_cad ? "yes" : "no");
-  ctx.log.info("  order {}: {} nodes, {} triangles, {} boundary lines, {} points", m.order,
+  ctx.log.report("info: {} (CAD: {})", ctx.input, ctx.has_cad ? "yes" : "no");
+  ctx.log.report("  order {}: {} nodes, {} triangles, {} boundary lines, {} points", m.order,
                m.num_nodes(), m.num_triangles(), m.num_lines(), m.point_node.size());
   int count[3] = {0, 0, 0};
   for (const Entity& e : m.entities) ++count[e.dim];
-  ctx.log.info("  entities: {} points, {} curves, {} surfaces", count[0], count[1], count[2]);
+  ctx.log.report("  entities: {} points, {} curves, {} surfaces", count[0], count[1], count[2]);
 
   std::map<int, int> lines_on, tris_on;
   for (int c : m.line_entity) ++lines_on[c];
   for (int s : m.tri_entity) ++tris_on[s];
-  if (m.physicals.empty()) ctx.log.info("  physical groups: none");
+  if (m.physicals.empty()) ctx.log.report("  physical groups: none");
   for (const PhysicalGroup& g : m.physicals) {
     int elements = 0;
     for (int e : g.entities) elements += g.dim == 1 ? lines_on[e] : g.dim == 2 ? tris_on[e] : 0;
-    ctx.log.info("  physical {} {} \"{}\": {} entities, {} elements", dim_name(g.dim), g.tag,
+    ctx.log.report("  physical {} {} \"{}\": {} entities, {} elements", dim_name(g.dim), g.tag,
                  g.name, g.entities.size(), elements);
   }
 }
