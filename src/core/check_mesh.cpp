@@ -5,8 +5,10 @@
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 #include "core/error.h"
+#include "core/input_limits.h"
 
 namespace homesh {
 namespace {
@@ -18,12 +20,42 @@ std::string where(const Mesh& m, int e) {
   return s.str();
 }
 
+std::string fmt_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Every corner edge bounds one or two triangles: a third one sharing it makes
+// the mesh non-manifold, which no stage can curve or layer.
+void check_manifold(const Mesh& m, const std::string& source) {
+  std::unordered_map<std::uint64_t, int> uses;
+  uses.reserve(static_cast<std::size_t>(3 * m.num_triangles()));
+  for (int e = 0; e < m.num_triangles(); ++e)
+    for (int k = 0; k < 3; ++k) {
+      const auto a = static_cast<std::uint32_t>(m.tri(k, e));
+      const auto b = static_cast<std::uint32_t>(m.tri((k + 1) % 3, e));
+      const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+      if (++uses[key] > 2)
+        throw Error(source + ": the edge between nodes " + std::to_string(std::min(a, b) + 1) +
+                    " and " + std::to_string(std::max(a, b) + 1) + " of " + where(m, e) +
+                    " is shared by three or more triangles (a non-manifold mesh)");
+    }
+}
+
 }  // namespace
 
 void check_mesh(const Mesh& m, const std::string& source) {
-  for (int i = 0; i < m.num_nodes(); ++i)
+  for (int i = 0; i < m.num_nodes(); ++i) {
     if (!m.x.col(i).allFinite())
       throw Error(source + ": node " + std::to_string(i + 1) + " has a non-finite coordinate");
+    if (m.x.col(i).cwiseAbs().maxCoeff() > limits::kMaxCoordinate)
+      throw Error(source + ": node " + std::to_string(i + 1) + " lies " +
+                  fmt_number(m.x.col(i).cwiseAbs().maxCoeff()) +
+                  " from the origin; homesh accepts coordinates up to " +
+                  fmt_number(limits::kMaxCoordinate));
+  }
+  check_manifold(m, source);
   std::set<std::array<int, 3>> seen;
   for (int e = 0; e < m.num_triangles(); ++e) {
     std::array<int, 3> c = {m.tri(0, e), m.tri(1, e), m.tri(2, e)};

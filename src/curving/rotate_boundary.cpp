@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <sstream>
 #include <cstdio>
 #include <limits>
 
@@ -34,7 +35,18 @@ void check(const Mesh& m, const std::vector<bool>& wall, const std::vector<bool>
   if (!any) throw Error("rotate_boundary: the wall has no nodes");
   if (!(opt.step != 0 && std::isfinite(opt.step)))
     throw Error("rotate_boundary: the angle step must be finite and nonzero");
-  if (!(opt.max_angle >= 0)) throw Error("rotate_boundary: max_angle must be >= 0");
+  if (!(opt.max_angle >= 0 && std::isfinite(opt.max_angle)))
+    throw Error("rotate_boundary: max_angle must be finite and >= 0");
+  // A cap instead of a run of a billion steps (step=1e-9).
+  const double steps = opt.max_angle / std::abs(opt.step);
+  if (steps > kMaxRotationSteps)
+  {
+    std::ostringstream s;
+    s << "rotate_boundary: turning to " << opt.max_angle << " degrees by " << std::abs(opt.step)
+      << " would take " << steps << " steps; at most " << kMaxRotationSteps
+      << " are allowed: use a larger step or a smaller max";
+    throw Error(s.str());
+  }
   if (opt.substeps < 1) throw Error("rotate_boundary: substeps must be >= 1");
 }
 

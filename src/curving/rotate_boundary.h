@@ -34,6 +34,9 @@
 
 namespace homesh {
 
+/// The most steps one rotation may take (max_angle / |step|).
+constexpr int kMaxRotationSteps = 100000;
+
 struct RotateOptions {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double step = 1.0;       ///< angle step h, degrees (its sign gives the sense)

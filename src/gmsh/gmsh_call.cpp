@@ -23,6 +23,19 @@ void gmsh_call(const std::string& what, const std::function<void()>& body) {
   } catch (const std::exception& e) {
     message = e.what();
   }
+  // With General.AbortOnError 0 (as homesh runs Gmsh) errors are only logged:
+  // the first one logged during the call is the cause. The last error also
+  // catches one logged while the logger did not record (a nested call stopped it).
+  if (message.empty()) {
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    for (const std::string& line : log)
+      if (line.rfind("Error", 0) == 0) {
+        message = line.substr(std::min(line.find(':') + 1, line.size()));
+        message.erase(0, message.find_first_not_of(' '));
+        break;
+      }
+  }
   if (message.empty()) {
     std::string last;
     gmsh::logger::getLastError(last);

@@ -12,6 +12,10 @@
 namespace homesh::gmsh_adapter {
 namespace {
 
+// Tags are positive; MSH files store them as signed or unsigned 64-bit
+// integers, so a negative tag reaches Gmsh's API as a number >= 2^63.
+constexpr std::size_t kMaxTag = (std::size_t{1} << 63) - 1;
+
 struct ElementBlock {
   int entity;
   std::vector<std::size_t> node_tags;
@@ -90,14 +94,21 @@ Mesh read_model(const std::string& source) {
   std::sort(perm.begin(), perm.end(),
             [&](std::size_t a, std::size_t b) { return tagged[a].first < tagged[b].first; });
 
-  const std::size_t max_tag = tagged.empty() ? 0 : tagged[perm.back()].first;
-  std::vector<int> index_of(max_tag + 1, -1);
+  // Node tags may be sparse and huge: a compacting index (the sorted tags,
+  // searched), never an array sized by the largest tag.
+  std::vector<std::size_t> sorted_tags(perm.size());
   m.x.resize(2, static_cast<Eigen::Index>(perm.size()));
   m.node_class.resize(perm.size());
   double extent = 0, zmax = 0;
   for (std::size_t k = 0; k < perm.size(); ++k) {
     const std::size_t i = perm[k];
-    index_of[tagged[i].first] = static_cast<int>(k);
+    const std::size_t tag = tagged[i].first;
+    if (tag == 0 || tag > kMaxTag)
+      throw Error(source + ": node tag " + std::to_string(static_cast<long long>(tag)) +
+                  " is not a positive integer below 2^63");
+    if (k > 0 && sorted_tags[k - 1] == tag)
+      throw Error(source + ": node tag " + std::to_string(tag) + " is used twice");
+    sorted_tags[k] = tag;
     m.x(0, k) = xyz[3 * i];
     m.x(1, k) = xyz[3 * i + 1];
     m.node_class[k] = tagged[i].second;
@@ -145,9 +156,11 @@ Mesh read_model(const std::string& source) {
   m.order = order;
 
   auto node_index = [&](std::size_t tag) {
-    const int i = tag < index_of.size() ? index_of[tag] : -1;
-    if (i < 0) throw Error(source + ": element refers to unknown node " + std::to_string(tag));
-    return i;
+    const auto it = std::lower_bound(sorted_tags.begin(), sorted_tags.end(), tag);
+    if (it == sorted_tags.end() || *it != tag)
+      throw Error(source + ": an element refers to node " +
+                  std::to_string(static_cast<long long>(tag)) + ", which the mesh does not have");
+    return static_cast<int>(it - sorted_tags.begin());
   };
   auto fill = [&](const std::vector<ElementBlock>& blocks, int per, Eigen::MatrixXi& conn,
                   std::vector<int>& entity) {

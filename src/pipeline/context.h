@@ -28,6 +28,9 @@ struct Context {
   std::vector<std::string> notes;
   /// Write the output even if some element is not certified valid.
   bool keep_invalid = false;
+  /// Let a `.geo` input run commands that reach outside the model (System,
+  /// Save, ...: gmsh/geo_commands.h); refused otherwise.
+  bool trust_geo = false;
 
   /// Adds `f`, replacing a field of the same name.
   void set_field(Field f);

@@ -1,16 +1,23 @@
 #include "pipeline/run_pipeline.h"
 
+#include <fmt/core.h>
 #include <gmsh.h>
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 
 #include "core/error.h"
+#include "core/input_limits.h"
 #include "core/progress.h"
+#include "gmsh/exit_guard.h"
+#include "gmsh/geo_commands.h"
 #include "gmsh/gmsh_call.h"
+#include "gmsh/msh_header.h"
+#include "gmsh/read_in_child.h"
 #include "gmsh/read_model.h"
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
@@ -40,6 +47,55 @@ void check_readable(const std::string& path) {
   if (!in) throw Error(path + ": cannot be read");
 }
 
+// Commands that reach outside the model (running programs, writing files,
+// sleeping) need --trust-geo.
+void check_geo_commands(const std::string& path, bool trusted) {
+  if (trusted) return;
+  for (const auto& c : gmsh_adapter::geo_file_commands(path)) {
+    const std::string at = c.file + ":" + std::to_string(c.line);
+    const bool computed = c.name == "Include" || c.name == "Merge";
+    throw Error(at + ": " +
+                (computed ? "'" + c.name + "' of a computed path, which homesh cannot check"
+                          : "the command '" + c.name + "' reaches outside the model") +
+                "; homesh runs such .geo files only with --trust-geo");
+  }
+}
+
+// Gmsh's reader drops some elements without an error (a P1 and a P2 triangle
+// in one entity keep one kind): what it read must be all the file declares.
+// (Nodes no element uses are dropped too, harmlessly: they are not compared.)
+void check_nothing_dropped(const std::string& path) {
+  const gmsh_adapter::MshHeader h = gmsh_adapter::read_msh_header(path);
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+  gmsh::model::mesh::getElements(types, element_tags, element_nodes, -1, -1);
+  std::uint64_t elements = 0;
+  for (const auto& t : element_tags) elements += t.size();
+  if (h.elements && *h.elements != elements)
+    throw Error(path + ": the file declares " + std::to_string(*h.elements) +
+                " elements, but Gmsh read " + std::to_string(elements) +
+                " (repeated tags, or element kinds mixed in one entity?)");
+}
+
+// A model beyond the input limits (core/input_limits.h) makes Gmsh's meshers
+// hang or overflow: refused before any meshing.
+void check_model_extent(const std::string& path) {
+  double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  const double far = std::max({std::abs(x0), std::abs(y0), std::abs(z0), std::abs(x1),
+                               std::abs(y1), std::abs(z1)});
+  const double across = std::hypot(x1 - x0, y1 - y0, z1 - z0);
+  if (!std::isfinite(far) || far > limits::kMaxCoordinate)
+    throw Error(path + ": the model reaches " + fmt::format("{:g}", far) +
+                " from the origin; homesh accepts coordinates up to " +
+                fmt::format("{:g}", limits::kMaxCoordinate));
+  if (!(across >= limits::kMinExtent && across >= limits::kMinRelativeExtent * far))
+    throw Error(path + ": the model is " + fmt::format("{:g}", across) +
+                " across, too small to mesh where it lies (at least " +
+                fmt::format("{:g}", std::max(limits::kMinExtent, limits::kMinRelativeExtent * far)) +
+                ")");
+}
+
 }  // namespace
 
 void load_input(const std::string& path, Context& ctx) {
@@ -50,19 +106,29 @@ void load_input(const std::string& path, Context& ctx) {
     throw Error(path + ": unknown input kind '." + ext +
                 "' (expected .geo, .step, .stp, .brep, .iges, .igs or .msh)");
   check_readable(path);
+  if (ext == "geo") check_geo_commands(path, ctx.trust_geo);
   ctx.input = path;
-  gmsh_adapter::gmsh_call(path, [&] {
-    gmsh::clear();
-    gmsh::open(path);
-  });
-  ctx.has_cad = gmsh_adapter::model_has_cad();
-  if (gmsh_adapter::model_has_mesh()) {
-    ctx.mesh = gmsh_adapter::read_model(path);
-  } else if (ext == "msh") {
-    throw Error(path + ": has no triangles (no 2D mesh)");
-  } else if (!ctx.has_cad) {
-    throw Error(path + ": defines no geometry and no mesh");
-  }
+  const auto read = [&] {
+    {
+      const gmsh_adapter::ExitGuard guard(path);
+      gmsh_adapter::gmsh_call(path, [&] {
+        gmsh::clear();
+        gmsh::open(path);
+      });
+    }
+    if (ext == "msh") check_nothing_dropped(path);
+    ctx.has_cad = gmsh_adapter::model_has_cad();
+    if (ctx.has_cad) check_model_extent(path);
+    if (gmsh_adapter::model_has_mesh()) {
+      ctx.mesh = gmsh_adapter::read_model(path);
+    } else if (ext == "msh") {
+      throw Error(path + ": has no triangles (no 2D mesh)");
+    } else if (!ctx.has_cad) {
+      throw Error(path + ": defines no geometry and no mesh");
+    }
+  };
+  if (ext == "msh") gmsh_adapter::read_in_child(path, read);
+  read();
 }
 
 void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
@@ -91,7 +157,7 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
 
 void write_output(const std::string& path, const std::string& provenance, Context& ctx) {
   const Mesh& m = ctx.require_mesh("output");
-  if (extension(path) != "msh") throw Error(path + ": output must be a .msh file");
+  gmsh_adapter::check_msh_path(path);
   // Every output carries its certified validity; an invalid mesh is never written silently.
   const MeshValidity v = mesh_validity(m);
   if (std::none_of(ctx.fields.begin(), ctx.fields.end(),

@@ -1,0 +1,91 @@
+#include "gmsh/read_in_child.h"
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <new>
+#include <thread>
+
+#include "core/error.h"
+
+#if defined(__SANITIZE_ADDRESS__)
+#define HOMESH_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define HOMESH_ASAN 1
+#endif
+#endif
+
+namespace homesh::gmsh_adapter {
+namespace {
+
+constexpr int kOutOfMemory = 3;
+constexpr int kGmshFailed = 4;
+
+[[noreturn]] void child(const std::function<void()>& read, std::uint64_t memory) {
+  const int null = open("/dev/null", O_WRONLY);
+  if (null >= 0) {  // the parent reports; Gmsh's messages would come twice
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+  }
+#ifndef HOMESH_ASAN
+  const rlimit cap{memory, memory};
+  setrlimit(RLIMIT_AS, &cap);
+#else
+  (void)memory;
+#endif
+  int code = 0;
+  try {
+    read();
+  } catch (const std::bad_alloc&) {
+    code = kOutOfMemory;
+  } catch (...) {
+    code = kGmshFailed;
+  }
+  _exit(code);
+}
+
+}  // namespace
+
+void read_in_child(const std::string& path, const std::function<void()>& read) {
+  struct stat st {};
+  const std::uint64_t size = stat(path.c_str(), &st) == 0 ? static_cast<std::uint64_t>(st.st_size) : 0;
+  const std::uint64_t memory = (std::uint64_t{1} << 30) + 64 * size;
+  const auto limit = std::chrono::seconds(60 + static_cast<long>(size >> 20));
+
+  std::fflush(nullptr);  // nothing buffered is written twice
+  const pid_t pid = fork();
+  if (pid < 0) throw Error(path + ": cannot check it in a child process: " + std::strerror(errno));
+  if (pid == 0) child(read, memory);
+
+  const auto start = std::chrono::steady_clock::now();
+  int status = 0;
+  for (auto pause = std::chrono::microseconds(200);;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) throw Error(path + ": lost its reader: " + std::strerror(errno));
+    if (std::chrono::steady_clock::now() - start > limit) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      throw Error(path + ": Gmsh's reader did not finish within " +
+                  std::to_string(limit.count()) + " s: is a count in the file corrupt?");
+    }
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::microseconds(20000));
+  }
+  if (WIFSIGNALED(status))
+    throw Error(path + ": Gmsh's reader crashed on it (" + strsignal(WTERMSIG(status)) +
+                "): the file is malformed");
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemory)
+    throw Error(path + ": Gmsh's reader needs more than " + std::to_string(memory >> 20) +
+                " MB for it: is a count in the file corrupt?");
+}
+
+}  // namespace homesh::gmsh_adapter

@@ -1,0 +1,23 @@
+#pragma once
+// Gmsh's `.msh` reader crashes (SIGSEGV) on some malformed files (huge tags in
+// MSH 4.1, bit flips in counts), or builds a model that crashes Gmsh's API
+// calls afterwards. homesh reads a `.msh` in a child process first, with every
+// Gmsh call it will make on it, so that no input file can crash homesh itself:
+// a crash, a runaway allocation or a hang there becomes a clear error naming
+// the file, and only a file the child read to its end is read in-process.
+#include <functional>
+#include <string>
+
+namespace homesh::gmsh_adapter {
+
+/// Runs `read` (reading `path` through Gmsh) in a forked child, its output
+/// discarded (memory capped at 1 GiB + 64 x the file's size, except under
+/// AddressSanitizer, which needs its own address space; time capped at 60 s +
+/// 1 s per MB). Throws homesh::Error naming `path` if the child dies by a
+/// signal, runs out of memory or time. An error thrown by `read` in the child
+/// passes: running `read` again in-process reports it. Call before any OpenMP
+/// region has run in this process (a forked child cannot use a parent's
+/// OpenMP threads).
+void read_in_child(const std::string& path, const std::function<void()>& read);
+
+}  // namespace homesh::gmsh_adapter
