@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "gmsh/write_msh.h"
 #include "pipeline/run_pipeline.h"
 #include "pipeline/stage_registry.h"
 #include "quality/measure_registry.h"
@@ -39,11 +40,14 @@ std::string quoted_command_line(int argc, char** argv) {
 int run(int argc, char** argv) {
   CLI::App app{"homesh: curved, valid high-order triangle meshes for Gmsh users", "homesh"};
   app.set_help_flag();
-  std::vector<std::string> files, modules;
+  std::string input, output;
+  std::vector<std::string> modules;
   std::string help_stage;
-  bool list = false, list_measures = false, quiet = false, verbose = false, keep_invalid = false;
-  app.add_option("files", files, "INPUT (.geo .step .brep .msh) and optional OUTPUT (.msh)")
-      ->expected(0, 2);
+  std::vector<std::pair<std::string, std::string>> set_numbers, set_strings;
+  bool list = false, list_measures = false, quiet = false, verbose = false, keep_invalid = false,
+       trust_geo = false, version = false;
+  app.add_option("INPUT", input, "the geometry or mesh: .geo .step .stp .brep .iges .igs .msh");
+  app.add_option("OUTPUT", output, "the .msh to write (none: nothing is written)");
   app.add_option("-m,--module", modules, "stage to run, as name:key=value:... (repeatable)")
       ->allow_extra_args(false);
   auto* help = app.add_option("-h,--help", help_stage, "this help, or a stage's options")
@@ -52,16 +56,42 @@ int run(int argc, char** argv) {
   app.add_flag("--measures", list_measures, "list the quality measures");
   app.add_flag("--keep-invalid", keep_invalid,
                "write the output even if some element is not certified valid");
+  app.add_flag("--trust-geo", trust_geo,
+               "let a .geo input run commands that reach outside the model (System, "
+               "SystemCall, Save, ...); refused otherwise");
+  app.add_option("--setnumber", set_numbers,
+                 "set a .geo parameter (DefineConstant) before reading, as Gmsh's -setnumber")
+      ->allow_extra_args(false)
+      ->type_name("NAME VALUE");
+  app.add_option("--setstring", set_strings,
+                 "set a .geo string parameter before reading, as Gmsh's -setstring")
+      ->allow_extra_args(false)
+      ->type_name("NAME VALUE");
+  app.add_flag("--version", version, "print homesh's and Gmsh's versions");
   app.add_flag("-q,--quiet", quiet, "print warnings and errors only");
   app.add_flag("-v,--verbose", verbose, "show Gmsh's own messages");
   app.footer("example: homesh geo/naca.geo -m mesh -m order:p=4 -m info out.msh");
-  app.parse(argc, argv);
+  // Gmsh spells its long options with one dash (-setnumber): so may homesh's users.
+  std::vector<std::string> args;
+  for (int i = argc - 1; i > 0; --i) {
+    const std::string a = argv[i];
+    args.push_back(a == "-setnumber" || a == "-setstring" ? "-" + a : a);
+  }
+  app.parse(args);
 
   if (help->count() > 0) {
     if (help_stage.empty())
       std::fputs((app.help() + "\n" + stage_list()).c_str(), stdout);
     else
       std::fputs(homesh::stage_help(homesh::stage(help_stage)).c_str(), stdout);
+    return 0;
+  }
+  if (version) {
+    gmsh::initialize(0, nullptr, false);
+    std::string gmsh_version;
+    gmsh::option::getString("General.Version", gmsh_version);
+    gmsh::finalize();
+    std::fputs(("homesh " HOMESH_VERSION " (Gmsh " + gmsh_version + ")\n").c_str(), stdout);
     return 0;
   }
   if (list) {
@@ -74,20 +104,37 @@ int run(int argc, char** argv) {
                  stdout);
     return 0;
   }
-  if (files.empty()) throw CLI::RequiredError("INPUT");
+  if (input.empty()) throw CLI::RequiredError("INPUT");
 
   std::vector<homesh::StageCall> calls;
   for (const auto& m : modules) calls.push_back(homesh::parse_stage_call(m));
+  // The output is checked before any work: a bad path costs no minutes of meshing.
+  if (!output.empty()) homesh::gmsh_adapter::check_msh_path(output);
 
-  gmsh::initialize(0, nullptr, false);
+  // Gmsh reads -setnumber/-setstring from its own command line, before any file.
+  std::vector<std::string> gmsh_args = {"homesh"};
+  for (const auto& [name, value] : set_numbers)
+    gmsh_args.insert(gmsh_args.end(), {"-setnumber", name, value});
+  for (const auto& [name, value] : set_strings)
+    gmsh_args.insert(gmsh_args.end(), {"-setstring", name, value});
+  std::vector<char*> gmsh_argv;
+  for (auto& a : gmsh_args) gmsh_argv.push_back(a.data());
+  gmsh::initialize(static_cast<int>(gmsh_argv.size()), gmsh_argv.data(), false);
   gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
+  // Gmsh errors are logged and turned into homesh's errors (gmsh/gmsh_call.h),
+  // never thrown from inside Gmsh's OpenMP regions, where they would abort.
+  gmsh::option::setNumber("General.AbortOnError", 0);
   homesh::Context ctx;
   ctx.log.quiet = quiet;
   ctx.keep_invalid = keep_invalid;
-  homesh::load_input(files[0], ctx);
+  ctx.trust_geo = trust_geo;
+  if (output.empty())
+    ctx.log.info("no OUTPUT given: the result will not be written (homesh {} ... OUTPUT.msh)",
+                 input);
+  homesh::load_input(input, ctx);
   homesh::run_stages(calls, ctx);
-  if (files.size() > 1)
-    homesh::write_output(files[1], "homesh " HOMESH_VERSION "\n" + quoted_command_line(argc, argv),
+  if (!output.empty())
+    homesh::write_output(output, "homesh " HOMESH_VERSION "\n" + quoted_command_line(argc, argv),
                          ctx);
   gmsh::finalize();
   return 0;
@@ -98,6 +145,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  // Past a file-size limit, writes fail with EFBIG and homesh says so, instead
+  // of the process being killed with its output half-written.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     return run(argc, argv);
   } catch (const CLI::ParseError& e) {
