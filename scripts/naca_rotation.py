@@ -208,7 +208,7 @@ def main():
     ap.add_argument("--geo", default=os.path.join(root, "geo", "naca7526_rotation.geo"))
     ap.add_argument("--out", default=os.path.join(root, "out", "naca_rotation"))
     ap.add_argument("--reference", default=os.path.join(
-        root, "..", "shared", "reference", "naca7526_rotation.csv"))
+        root, "tests", "data", "thesis", "naca7526_rotation.csv"))
     ap.add_argument("--max", type=float, default=180, help="largest angle tried, degrees")
     ap.add_argument("--quick", action="store_true", help="three heat scales only")
     args = ap.parse_args()

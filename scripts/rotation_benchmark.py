@@ -347,7 +347,7 @@ def main():
                          "--geo geo/plate_hole.geo (repeatable)")
     ap.add_argument("--out", default=os.path.join(root, "out", "rotation"))
     ap.add_argument("--reference", default=os.path.join(
-        root, "..", "shared", "reference", "tables_4_1_to_4_8_rotation.csv"))
+        root, "tests", "data", "thesis", "tables_4_1_to_4_8_rotation.csv"))
     ap.add_argument("--max", type=float, default=360, help="largest angle tried, degrees")
     ap.add_argument("--heat", type=float, help="one heat scale for every formulation (no sweep)")
     ap.add_argument("--no-variants", action="store_true", help="skip homesh's variants")

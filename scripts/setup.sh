@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages homesh needs (apt-get, as root; only the missing
-# ones) and builds it in build/. Idempotent: a second run only rebuilds.
+# ones) and builds it in build/, every warning an error (HOMESH_WERROR=OFF in
+# the environment to build anyway). Idempotent: a second run only rebuilds.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HOMESH_BUILD_DIR:-$root/build}"
@@ -19,5 +20,6 @@ if ((${#missing[@]})); then
     "${missing[@]}" >/dev/null
 fi
 
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DHOMESH_WERROR="${HOMESH_WERROR:-ON}" >/dev/null
 cmake --build "$build" -j "$(nproc)"

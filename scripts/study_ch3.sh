@@ -19,6 +19,6 @@ fi
 
 start=$(date +%s)
 "$build/homesh-study" --out "$out" --gallery "$root/geo/gallery_t1_t12.csv" \
-  --reference "$root/../shared/reference"
+  --reference "$root/tests/data/thesis"
 /usr/bin/python3 "$root/scripts/plot_ch3.py" "$out"
 echo "study_ch3: done in $(( $(date +%s) - start )) s; read $out/summary.md"

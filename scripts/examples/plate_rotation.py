@@ -101,7 +101,7 @@ def main():
                         help="ldlt (direct) or Jacobi CG (the thesis' kind)")
     parser.add_argument("--geo", default=os.path.join(ROOT, "geo", "plate_hole_fig413.geo"))
     parser.add_argument("--reference", default=os.path.join(
-        ROOT, "..", "shared", "reference", "tables_4_1_to_4_8_rotation.csv"))
+        ROOT, "tests", "data", "thesis", "tables_4_1_to_4_8_rotation.csv"))
     parser.add_argument("--out", default=os.path.join(ROOT, "out", "examples", "plate_rotation"))
     args = parser.parse_args()
     cases, nus = (CASES, NUS) if args.all else (QUICK_CASES, QUICK_NUS)

@@ -38,7 +38,16 @@ class Coefficient {
   T operator()(const QuadraturePoint& q) const { return function_ ? function_(q) : value_; }
 
  private:
-  T value_{};
+  // Zero, not T{}: Eigen's default constructor leaves the entries unset, and a
+  // function coefficient's unused value_ is still copied and moved.
+  static T zero() {
+    if constexpr (std::is_arithmetic_v<T>)
+      return T(0);
+    else
+      return T::Zero();
+  }
+
+  T value_ = zero();
   Function function_;
 };
 

@@ -5,7 +5,7 @@
 // A measure "guides" the optimisation correctly if the optimal element is
 // valid and, as the setup is mirror-symmetric, symmetric; the thesis found
 // valid symmetric, valid asymmetric and invalid optima (the boundary_guidance
-// column of reference/table_3_7_invariance.csv).
+// column of tests/data/thesis/table_3_7_invariance.csv).
 #include <string>
 
 #include "optim/optimal_element.h"

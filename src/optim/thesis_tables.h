@@ -1,6 +1,6 @@
 #pragma once
-// The thesis tables kept as oracles in the shared reference/ folder (read off
-// the thesis): CSV tables such as table_3_2_distortion_representation.csv, and
+// The thesis tables kept as oracles in tests/data/thesis/ (read off the
+// thesis): CSV tables such as table_3_2_distortion_representation.csv, and
 // the two orderings of table_3_6_curvature_sensitivity.txt.
 #include <string>
 #include <vector>

@@ -2,7 +2,7 @@
 // Element quality in the presence of boundaries (thesis Section 3.8.3, Fig
 // 3.29): which measures give a valid symmetric, valid asymmetric or invalid
 // optimal element (optim/boundary_guidance.h), beside the boundary_guidance
-// column of reference/table_3_7_invariance.csv.
+// column of tests/data/thesis/table_3_7_invariance.csv.
 #include <string>
 
 #include "study/study_output.h"

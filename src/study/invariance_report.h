@@ -12,7 +12,7 @@
 namespace homesh {
 
 /// The summary's section: the registry's invariance flags beside the thesis's
-/// reference/table_3_7_invariance.csv, and where the tests assert them.
+/// tests/data/thesis/table_3_7_invariance.csv, and where the tests assert them.
 std::string report_invariance(const StudyInputs& in);
 
 }  // namespace homesh

@@ -52,7 +52,7 @@ std::string usage() {
       "usage: homesh-study [--out DIR] [--gallery FILE] [--reference DIR] [PART...]\n"
       "  --out DIR        output folder (default out/study_ch3)\n"
       "  --gallery FILE   gallery data (default geo/gallery_t1_t12.csv)\n"
-      "  --reference DIR  thesis tables (default ../shared/reference)\n"
+      "  --reference DIR  thesis tables (default tests/data/thesis)\n"
       "parts (default: all):\n";
   for (const Part& p : parts()) text += fmt::format("  {:<15}{}\n", p.name, p.summary);
   return text;
@@ -62,7 +62,7 @@ std::string usage() {
 
 int main(int argc, char** argv) {
   std::string folder = "out/study_ch3";
-  StudyInputs in{"geo/gallery_t1_t12.csv", "../shared/reference"};
+  StudyInputs in{"geo/gallery_t1_t12.csv", "tests/data/thesis"};
   std::vector<std::string> wanted;
   std::string command = "homesh-study";
   for (int i = 1; i < argc; ++i) {

@@ -1,6 +1,6 @@
 #pragma once
 // Thesis Table 3.2 reproduced on our gallery (optim/distortion_representation.h)
-// and compared cell by cell with reference/table_3_2_distortion_representation.csv.
+// and compared cell by cell with tests/data/thesis/table_3_2_distortion_representation.csv.
 #include <string>
 
 #include "study/study_output.h"

@@ -8,7 +8,7 @@ namespace homesh {
 
 struct StudyInputs {
   std::string gallery;    ///< geo/gallery_t1_t12.csv
-  std::string reference;  ///< the folder of the thesis tables (shared/reference)
+  std::string reference;  ///< the folder of the thesis tables (tests/data/thesis)
 };
 
 class StudyOutput {

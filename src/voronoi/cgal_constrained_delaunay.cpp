@@ -1,4 +1,3 @@
-#define CGAL_DISABLE_GMP 1
 #include "voronoi/cgal_constrained_delaunay.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

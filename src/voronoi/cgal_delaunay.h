@@ -1,7 +1,8 @@
 #pragma once
-// Adapter to CGAL 5.5 (header-only; built with CGAL_DISABLE_GMP so that no GMP
-// library is linked: exact fall-backs use CGAL's own number types). Every
-// translation unit of a program that includes CGAL must agree on that macro.
+// Adapter to CGAL 5.5 (header-only; its .cpp is built with CGAL::CGAL's usage
+// requirements and CGAL_DISABLE_GMP, see CMakeLists.txt, so that no GMP library
+// is linked: exact fall-backs use CGAL's own number types). Every translation
+// unit of a program that includes CGAL must agree on that macro.
 #include <Eigen/Core>
 #include <array>
 #include <vector>

@@ -3,7 +3,6 @@
 #include <gmsh.h>
 
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <algorithm>
 #include <fstream>
 #include <regex>
@@ -11,8 +10,10 @@
 
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
+#include "../support/temp_dir.h"
 
 using homesh::test::run_homesh;
+using homesh::test::TempDir;
 
 namespace {
 
@@ -47,8 +48,8 @@ TEST_CASE("homesh --list and --help STAGE describe the stages", "[app]") {
 }
 
 TEST_CASE("NACA-7526 mesh, order 4, info: the issue's command works end to end", "[app]") {
-  const std::string out = "/tmp/homesh_cli_naca.msh";
-  std::remove(out.c_str());
+  const TempDir dir;
+  const std::string out = dir / "naca.msh";
   const auto r = run_homesh(geo + "naca.geo -m mesh -m order:p=4 -m info " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
@@ -75,21 +76,20 @@ TEST_CASE("NACA-7526 mesh, order 4, info: the issue's command works end to end",
                                   det, pts);
   REQUIRE(det.size() == 4 * elements.size());
   REQUIRE(*std::min_element(det.begin(), det.end()) > 0);
-  std::remove(out.c_str());
-  std::remove((out + ".opt").c_str());
 }
 
 TEST_CASE("bad input gets a clear error naming it, non-zero exit and no output", "[app]") {
-  const std::string out = "/tmp/homesh_cli_bad.msh";
-  std::remove(out.c_str());
+  const TempDir dir;
+  const std::string out = dir / "bad.msh";
   struct Case {
     std::string args, message;
   };
-  const std::string garbage = "/tmp/homesh_garbage.msh", empty = "/tmp/homesh_empty.geo";
+  const std::string garbage = dir / "garbage.msh", empty = dir / "empty.geo";
+  const std::string missing = dir / "does_not_exist.msh";
   std::ofstream(garbage) << "\x01\x02 this is not a mesh \xff\n";
   std::ofstream(empty).close();
   const std::vector<Case> cases = {
-      {"/tmp/does_not_exist.msh " + out, "/tmp/does_not_exist.msh: No such file"},
+      {missing + " " + out, missing + ": No such file"},
       {empty + " " + out, empty + ": empty file"},
       {garbage + " " + out, garbage},
       {"/etc/hostname " + out, "unknown input kind"},
@@ -109,15 +109,14 @@ TEST_CASE("bad input gets a clear error naming it, non-zero exit and no output",
     REQUIRE(r.output.find(c.message) != std::string::npos);
     REQUIRE_FALSE(exists(out));
   }
-  std::remove(garbage.c_str());
-  std::remove(empty.c_str());
 }
 
 namespace {
 
-// A MSH 2.2 file with 5 nodes and the given element lines ("type nodes...").
-std::string msh22(const std::string& name, const std::vector<std::string>& elements) {
-  const std::string path = "/tmp/homesh_bad_" + name + ".msh";
+// A MSH 2.2 file NAME.msh in DIR with 5 nodes and the given element lines ("type nodes...").
+std::string msh22(const TempDir& dir, const std::string& name,
+                  const std::vector<std::string>& elements) {
+  const std::string path = dir / (name + ".msh");
   std::ofstream out(path);
   out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n"
          "4 0 1 0\n5 0.5 0 1\n$EndNodes\n$Elements\n"
@@ -136,14 +135,15 @@ std::string msh22(const std::string& name, const std::vector<std::string>& eleme
 }  // namespace
 
 TEST_CASE("meshes homesh cannot take are refused with the reason", "[app]") {
-  const std::string out = "/tmp/homesh_cli_badmesh.msh";
-  std::remove(out.c_str());
+  const TempDir dir;
+  const std::string out = dir / "badmesh.msh";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {msh22("quad", {"3 1 2 3 4"}), "type 'Quadrilateral 4'"},
-      {msh22("tet", {"2 1 2 3", "4 1 2 3 5"}), "has 3D elements"},
-      {msh22("inverted", {"2 1 2 3", "2 1 4 3"}), "triangle 2 at (0.333333, 0.666667) is inverted"},
-      {msh22("duplicate", {"2 1 2 3", "2 2 3 1"}), "duplicates another triangle"},
-      {msh22("lines", {"1 1 2"}), "has no triangles"},
+      {msh22(dir, "quad", {"3 1 2 3 4"}), "type 'Quadrilateral 4'"},
+      {msh22(dir, "tet", {"2 1 2 3", "4 1 2 3 5"}), "has 3D elements"},
+      {msh22(dir, "inverted", {"2 1 2 3", "2 1 4 3"}),
+       "triangle 2 at (0.333333, 0.666667) is inverted"},
+      {msh22(dir, "duplicate", {"2 1 2 3", "2 2 3 1"}), "duplicates another triangle"},
+      {msh22(dir, "lines", {"1 1 2"}), "has no triangles"},
   };
   for (const auto& [in, message] : cases) {
     const auto r = run_homesh(in + " -m info " + out);
@@ -152,12 +152,12 @@ TEST_CASE("meshes homesh cannot take are refused with the reason", "[app]") {
     REQUIRE(r.output.find("homesh: error: " + in) != std::string::npos);
     REQUIRE(r.output.find(message) != std::string::npos);
     REQUIRE_FALSE(exists(out));
-    std::remove(in.c_str());
   }
 }
 
 TEST_CASE("the same input gives byte-identical output", "[app]") {
-  const std::string out = "/tmp/homesh_cli_determinism.msh";
+  const TempDir dir;
+  const std::string out = dir / "determinism.msh";
   const std::string args = geo + "naca.geo -m mesh -m curve:p=3 -m quality " + out;
   REQUIRE(run_homesh(args).exit_code == 0);
   const std::string first = read(out), first_opt = read(out + ".opt");
@@ -165,23 +165,21 @@ TEST_CASE("the same input gives byte-identical output", "[app]") {
   REQUIRE(read(out) == first);
   REQUIRE(read(out + ".opt") == first_opt);
   REQUIRE(first.size() > 100000);
-  std::remove(out.c_str());
-  std::remove((out + ".opt").c_str());
 }
 
 TEST_CASE("a failed run leaves the previous output untouched", "[app]") {
-  const std::string out = "/tmp/homesh_cli_keep.msh";
+  const TempDir dir;
+  const std::string out = dir / "keep.msh";
   REQUIRE(run_homesh(geo + "plate_hole.geo -m order:p=2 " + out).exit_code == 0);
   const std::string before = read(out);
   REQUIRE(before.find("$HomeshProvenance") != std::string::npos);
   REQUIRE(run_homesh(geo + "plate_hole.geo -m order:p=99 " + out).exit_code != 0);
   REQUIRE(read(out) == before);
-  std::remove(out.c_str());
-  std::remove((out + ".opt").c_str());
 }
 
 TEST_CASE("a .msh input keeps its mesh; -m mesh needs CAD", "[app]") {
-  const std::string first = "/tmp/homesh_cli_first.msh", second = "/tmp/homesh_cli_second.msh";
+  const TempDir dir;
+  const std::string first = dir / "first.msh", second = dir / "second.msh";
   auto r = run_homesh(geo + "plate_hole.geo -m mesh -m info " + first);
   REQUIRE(r.exit_code == 0);
   const int nodes = number_after(r.output, "order 1:");
@@ -193,10 +191,6 @@ TEST_CASE("a .msh input keeps its mesh; -m mesh needs CAD", "[app]") {
   r = run_homesh(first + " -m mesh " + second);
   REQUIRE(r.exit_code != 0);
   REQUIRE(r.output.find("has no CAD geometry") != std::string::npos);
-  for (const auto& f : {first, second}) {
-    std::remove(f.c_str());
-    std::remove((f + ".opt").c_str());
-  }
 }
 
 TEST_CASE("a CAD input is auto-meshed only when no stage creates a mesh", "[app]") {

@@ -6,15 +6,16 @@
 #include <fstream>
 #include <iterator>
 #include <cmath>
-#include <cstdio>
 #include <regex>
 #include <tuple>
 
 #include "gmsh/read_model.h"
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
+#include "../support/temp_dir.h"
 
 using homesh::test::run_homesh;
+using homesh::test::TempDir;
 
 namespace {
 const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
@@ -23,7 +24,8 @@ const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
 TEST_CASE("curve: the plate's hole nodes lie on the circle, every element valid", "[app]") {
   for (int p : {2, 4}) {
     CAPTURE(p);
-    const std::string out = "/tmp/homesh_curve_plate.msh";
+    const TempDir dir;
+    const std::string out = dir / "plate.msh";
     const auto r = run_homesh(geo + "plate_hole.geo -m mesh -m curve:p=" + std::to_string(p) +
                               ":formulation=heat_q17 -m quality " + out);
     INFO(r.output);
@@ -43,13 +45,12 @@ TEST_CASE("curve: the plate's hole nodes lie on the circle, every element valid"
     }
     REQUIRE(on_hole > 0);
     REQUIRE(worst < 1e-12);
-    std::remove(out.c_str());
-    std::remove((out + ".opt").c_str());
   }
 }
 
 TEST_CASE("curve: NACA-7526 at order 4, valid, with a bad option refused", "[app]") {
-  const std::string out = "/tmp/homesh_curve_naca.msh";
+  const TempDir dir;
+  const std::string out = dir / "naca.msh";
   auto r = run_homesh(geo + "naca.geo -m mesh -m curve:p=4 " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
@@ -62,8 +63,6 @@ TEST_CASE("curve: NACA-7526 at order 4, valid, with a bad option refused", "[app
   r = run_homesh(geo + "naca.geo -m mesh -m curve:p=4:nu=0.5 " + out);
   REQUIRE(r.exit_code != 0);
   REQUIRE(r.output.find("nu must be in (-1, 0.5)") != std::string::npos);
-  std::remove(out.c_str());
-  std::remove((out + ".opt").c_str());
 }
 
 namespace {
@@ -109,7 +108,8 @@ TEST_CASE("curve: boundary layers curved near the wall only, better than the pla
   CHECK(fallback == Approx(std::get<2>(curve_log(r.output))).margin(1e-4));
   // vertices=fixed keeps the linear mesh: every triangle's corners where the layers put
   // them (the 1e-4 first layer exactly), the free vertices moved.
-  const std::string lin = "/tmp/homesh_curve_layers_lin.msh", out = "/tmp/homesh_curve_layers.msh";
+  const TempDir dir;
+  const std::string lin = dir / "layers_lin.msh", out = dir / "layers.msh";
   REQUIRE(run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 " +
                      lin).exit_code == 0);
   REQUIRE(run_homesh(lin + " -m curve:p=3 " + out).exit_code == 0);
@@ -130,14 +130,11 @@ TEST_CASE("curve: boundary layers curved near the wall only, better than the pla
   };
   CHECK(corner_shift(out) == 0.0);
   CHECK(corner_shift(out + ".free.msh") > 1e-6);
-  for (const std::string& f : {lin, out, out + ".free.msh"}) {
-    std::remove(f.c_str());
-    std::remove((f + ".opt").c_str());
-  }
 }
 
 TEST_CASE("curve: a bare .msh is curved onto splines rebuilt from its linear boundary", "[app]") {
-  const std::string lin = "/tmp/homesh_curve_nocad_lin.msh", out = "/tmp/homesh_curve_nocad.msh";
+  const TempDir dir;
+  const std::string lin = dir / "nocad_lin.msh", out = dir / "nocad.msh";
   auto r = run_homesh(geo + "plate_hole.geo -m mesh " + lin);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
@@ -190,5 +187,4 @@ TEST_CASE("curve: a bare .msh is curved onto splines rebuilt from its linear bou
   r = run_homesh(lin + " -m curve:p=3:corner=180 " + out);
   REQUIRE(r.exit_code != 0);
   REQUIRE(r.output.find("corner = 180 must be in (0, 180) degrees") != std::string::npos);
-  for (const std::string& f : {lin, lin + ".opt", out, out + ".opt"}) std::remove(f.c_str());
 }

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "../support/temp_dir.h"
+
 namespace {
 
 std::vector<std::string> files_in(const std::string& dir) {
@@ -24,14 +26,13 @@ std::vector<std::string> files_in(const std::string& dir) {
 }  // namespace
 
 TEST_CASE("SIGINT or SIGTERM at any moment leaves no partial output", "[app]") {
-  const std::string dir = "/tmp/homesh_interrupt";
-  const std::string out = dir + "/out.msh";
   const std::string input = std::string(HOMESH_SOURCE_DIR) + "/geo/naca.geo";
   int interrupted = 0;
   for (int signal_number : {SIGINT, SIGTERM}) {
     for (int delay_ms : {300, 900, 1500, 2100}) {
       CAPTURE(signal_number, delay_ms);
-      (void)system(("rm -rf " + dir + " && mkdir -p " + dir).c_str());
+      const homesh::test::TempDir dir;
+      const std::string out = dir / "out.msh";
       const pid_t pid = fork();
       REQUIRE(pid >= 0);
       if (pid == 0) {
@@ -44,7 +45,7 @@ TEST_CASE("SIGINT or SIGTERM at any moment leaves no partial output", "[app]") {
       kill(pid, signal_number);
       int status = 0;
       waitpid(pid, &status, 0);
-      const auto files = files_in(dir);
+      const auto files = files_in(dir.path());
       if (WIFSIGNALED(status)) {  // killed before main() installed its handlers
         REQUIRE(files.empty());
         continue;
@@ -62,5 +63,4 @@ TEST_CASE("SIGINT or SIGTERM at any moment leaves no partial output", "[app]") {
     }
   }
   REQUIRE(interrupted > 0);
-  (void)system(("rm -rf " + dir).c_str());
 }

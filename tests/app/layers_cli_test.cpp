@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdio>
 #include <regex>
 #include <set>
 #include <string>
@@ -14,8 +13,10 @@
 #include "gmsh/read_model.h"
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
+#include "../support/temp_dir.h"
 
 using homesh::test::run_homesh;
+using homesh::test::TempDir;
 
 namespace {
 
@@ -42,15 +43,11 @@ LayerLog parse(const std::string& out) {
   return l;
 }
 
-void remove_output(const std::string& out) {
-  std::remove(out.c_str());
-  std::remove((out + ".opt").c_str());
-}
-
 }  // namespace
 
 TEST_CASE("layers: 3 layers around the plate's hole, curved at p = 3, valid (Fig 4.8)", "[app]") {
-  const std::string out = "/tmp/homesh_layers_plate.msh";
+  const TempDir dir;
+  const std::string out = dir / "plate.msh";
   const auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=3:first=0.01:"
                                   "ratio=1.3 -m curve:p=3 -m quality " + out);
   INFO(r.output);
@@ -79,11 +76,11 @@ TEST_CASE("layers: 3 layers around the plate's hole, curved at p = 3, valid (Fig
   CHECK(off < 1e-12);
   CHECK(first > 0.01 - 1e-12);
   CHECK(first < 0.0105);
-  remove_output(out);
 }
 
 TEST_CASE("layers: 15 layers on NACA-7526 with single normals, curved at p = 3 (Fig 4.9)", "[app]") {
-  const std::string out = "/tmp/homesh_layers_naca15.msh";
+  const TempDir dir;
+  const std::string out = dir / "naca15.msh";
   const auto r = run_homesh(geo + "naca.geo -m mesh -m layers:walls=aerofoil:n=15:first=1e-3:"
                                   "ratio=1.2 -m curve:p=3 -m quality " + out);
   INFO(r.output);
@@ -93,11 +90,11 @@ TEST_CASE("layers: 15 layers on NACA-7526 with single normals, curved at p = 3 (
   const LayerLog l = parse(r.output);
   CHECK(l.after == l.before + 2 * 15 * l.wall_edges);
   CHECK(l.corner_triangles == 4 * 15);  // the two wall-edge strips at the trailing edge
-  remove_output(out);
 }
 
 TEST_CASE("layers: 5 normals at the trailing edge beat a single one (Figs 4.10, 4.12)", "[app]") {
-  const std::string out = "/tmp/homesh_layers_naca4.msh";
+  const TempDir dir;
+  const std::string out = dir / "naca4.msh";
   const std::string layers = "naca.geo -m mesh -m layers:walls=aerofoil:n=4:first=1e-3:ratio=1.2";
   auto r = run_homesh(geo + layers + " " + out);
   INFO(r.output);
@@ -116,11 +113,11 @@ TEST_CASE("layers: 5 normals at the trailing edge beat a single one (Figs 4.10, 
   CHECK(multi.corner_triangles == 4 * 4 + (5 - 1) * (2 * 4 - 1));
   CHECK(single.corner_q < 0.1);
   CHECK(multi.corner_q > 0.3);
-  remove_output(out);
 }
 
 TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p = 3, valid", "[app]") {
-  const std::string out = "/tmp/homesh_layers_channel.msh";
+  const TempDir dir;
+  const std::string out = dir / "channel.msh";
   const auto r = run_homesh(geo + "channel.geo -m mesh -m layers:walls=wall:n=5:first=1e-3:"
                                   "ratio=1.3 -m curve:p=3 -m quality " + out);
   INFO(r.output);
@@ -154,11 +151,11 @@ TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p =
   REQUIRE(low.size() == 6);
   for (int k = 0; k <= 5; ++k) CHECK(low[k] == Approx(1e-3 * (std::pow(1.3, k) - 1) / 0.3).margin(1e-12));
   CHECK(off < 1e-12);
-  remove_output(out);
 }
 
 TEST_CASE("layers: refusals name the cause", "[app]") {
-  const std::string out = "/tmp/homesh_layers_refused.msh";
+  const TempDir dir;
+  const std::string out = dir / "refused.msh";
   auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=5:first=0.1:ratio=1.5 " + out);
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("cannot open a room 1.319 thick for 5 layers") != std::string::npos);
@@ -169,7 +166,6 @@ TEST_CASE("layers: refusals name the cause", "[app]") {
   r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:normals=many " + out);
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("normals=many: expected single or multi") != std::string::npos);
-  remove_output(out);
 }
 
 namespace {
@@ -177,15 +173,15 @@ namespace {
 // theta_max (degrees, clockwise) of the coarse quadratic NACA-7526 boundary-layer mesh of
 // scripts/naca_rotation.py (thesis Section 4.4.2) turned about its quarter chord, nu = 0.25.
 int naca_theta_max(const std::string& fan, const std::string& formulation) {
+  const TempDir dir;
   const auto r = run_homesh(geo + "naca7526_rotation.geo -m mesh -m layers:walls=aerofoil:n=2:"
                             "first=0.02:ratio=1.2" + fan + " -m curve:p=2 -m rotate:wall=aerofoil:"
                             "centre=0.25,0:step=-1:max=90:nu=0.25:" + formulation +
-                            " /tmp/homesh_layers_naca_rotation.msh");
+                            " " + dir / "naca_rotation.msh");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   std::smatch m;
   REQUIRE(std::regex_search(r.output, m, std::regex(R"(rotate: theta_max = (\d+) deg)")));
-  remove_output("/tmp/homesh_layers_naca_rotation.msh");
   return std::stoi(m[1]);
 }
 

@@ -2,15 +2,13 @@
 // at the end) when asked by HOMESH_PROGRESS=1 or when stderr is a terminal;
 // nothing at all when stderr is a file or a pipe.
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "../support/run_command.h"
+#include "../support/temp_dir.h"
 
 namespace {
 
@@ -22,17 +20,14 @@ struct Run {
 
 // homesh on geo/GEO with ARGS, stdout and stderr apart.
 Run run_apart(const std::string& env, const std::string& geo, const std::string& args) {
-  // One file per run: ctest runs the test cases of this file in parallel.
-  static int runs = 0;
-  const std::string err_file = "/tmp/homesh_progress_test." + std::to_string(getpid()) + "." +
-                               std::to_string(++runs) + ".err";
+  const homesh::test::TempDir dir;
+  const std::string err_file = dir / "homesh.err";
   const auto r = homesh::test::run_command("(" + env + " " + HOMESH_BINARY + " " +
                                            HOMESH_SOURCE_DIR + "/geo/" + geo + " " + args +
                                            " 2>" + err_file + ")");
   std::ifstream in(err_file);
   std::stringstream err;
   err << in.rdbuf();
-  std::remove(err_file.c_str());
   return {r.exit_code, r.output, err.str()};
 }
 

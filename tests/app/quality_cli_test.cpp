@@ -2,7 +2,6 @@
 #include <gmsh.h>
 
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <fstream>
 #include <regex>
 
@@ -10,17 +9,19 @@
 #include "gmsh/write_model.h"
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
+#include "../support/temp_dir.h"
 
 using homesh::test::run_homesh;
+using homesh::test::TempDir;
 
 namespace {
 
 const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
 
 // A quadratic plate-with-hole mesh with one interior edge node pushed far
-// across its triangles: corners fine, curved elements invalid.
-std::string write_invalid_mesh() {
-  const std::string path = "/tmp/homesh_invalid_input.msh";
+// across its triangles, written in DIR: corners fine, curved elements invalid.
+std::string write_invalid_mesh(const TempDir& dir) {
+  const std::string path = dir / "invalid_input.msh";
   homesh::test::GmshSession session;
   gmsh::open(geo + "plate_hole.geo");
   gmsh::model::mesh::generate(2);
@@ -42,7 +43,8 @@ std::string write_invalid_mesh() {
 }  // namespace
 
 TEST_CASE("quality stage: certified validity, views and a report", "[app]") {
-  const std::string out = "/tmp/homesh_quality.msh";
+  const TempDir dir;
+  const std::string out = dir / "quality.msh";
   const auto r = run_homesh(geo + "plate_hole.geo -m mesh -m order:p=3 -m quality:measures=Q4,Q6 " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
@@ -60,13 +62,11 @@ TEST_CASE("quality stage: certified validity, views and a report", "[app]") {
     names.push_back(name);
   }
   REQUIRE(names == std::vector<std::string>{"minJ/maxJ", "Q4 min", "Q4", "Q6 min", "Q6"});
-  std::remove(out.c_str());
-  std::remove((out + ".opt").c_str());
 }
 
 TEST_CASE("an invalid mesh is never written silently", "[app]") {
-  const std::string in = write_invalid_mesh(), out = "/tmp/homesh_invalid_output.msh";
-  std::remove(out.c_str());
+  const TempDir dir;
+  const std::string in = write_invalid_mesh(dir), out = dir / "invalid_output.msh";
   auto r = run_homesh(in + " -m quality " + out);
   INFO(r.output);
   REQUIRE(r.exit_code != 0);
@@ -77,5 +77,4 @@ TEST_CASE("an invalid mesh is never written silently", "[app]") {
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.output.find("warning: " + out + ": writing") != std::string::npos);
   REQUIRE(std::ifstream(out).good());
-  for (const auto& f : {in, out, out + ".opt"}) std::remove(f.c_str());
 }

@@ -4,12 +4,12 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdio>
 #include <regex>
 
 #include "gmsh/read_model.h"
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
+#include "../support/temp_dir.h"
 
 using homesh::test::run_homesh;
 
@@ -18,7 +18,8 @@ const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
 }
 
 TEST_CASE("rotate: the plate's hole turns 10 degrees, the output is that state, valid", "[app]") {
-  const std::string out = "/tmp/homesh_rotate_plate.msh";
+  const homesh::test::TempDir dir;
+  const std::string out = dir / "plate.msh";
   const auto r = run_homesh(geo + "plate_hole.geo -m mesh:factor=2 -m curve:p=2 " +
                             "-m rotate:max=10:step=2:formulation=heat_q17:nu=0.45:solver=cg " +
                             "-m quality " + out);
@@ -54,8 +55,6 @@ TEST_CASE("rotate: the plate's hole turns 10 degrees, the output is that state, 
   }
   REQUIRE(off_circle < 1e-12);
   REQUIRE(vertex_angle == Approx(10).margin(1e-9));
-  std::remove(out.c_str());
-  std::remove((out + ".opt").c_str());
 }
 
 namespace {

@@ -5,16 +5,17 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <regex>
 #include <utility>
 
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
+#include "../support/temp_dir.h"
 #include "gmsh/read_model.h"
 
 using homesh::test::run_homesh;
+using homesh::test::TempDir;
 
 namespace {
 
@@ -44,7 +45,8 @@ homesh::Mesh read_output(const std::string& path) {
 
 TEST_CASE("voronoi: the plate with a hole, its dual conforming, then curved to order 3",
           "[app][voronoi]") {
-  const std::string out = "/tmp/homesh_voronoi_plate.msh";
+  const TempDir dir;
+  const std::string out = dir / "plate.msh";
   const auto r = run_homesh(geo + "plate_hole.geo -m voronoi -m curve:p=3 -m quality " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
@@ -72,12 +74,12 @@ TEST_CASE("voronoi: the plate with a hole, its dual conforming, then curved to o
   const int nodes = logged(r.output, R"(voronoi: metric iso[^:]*: (\d+) nodes)");
   CHECK(nodes > 150);
   CHECK(nodes < 260);
-  std::remove(out.c_str());
 }
 
 TEST_CASE("voronoi: NACA-7526 on a 600 x 600 grid, the strip the dual misses regrown finer",
           "[app][voronoi]") {
-  const std::string out = "/tmp/homesh_voronoi_naca.msh";
+  const TempDir dir;
+  const std::string out = dir / "naca.msh";
   const auto r = run_homesh(geo + "naca.geo -m voronoi:grid=600 -m curve:p=3 " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
@@ -98,7 +100,6 @@ TEST_CASE("voronoi: NACA-7526 on a 600 x 600 grid, the strip the dual misses reg
   const homesh::Mesh m = read_output(out);
   CHECK(m.num_triangles() == total);
   CHECK(m.physicals.size() == 3);
-  std::remove(out.c_str());
 }
 
 TEST_CASE("voronoi: NACA-7526 on an 800 x 800 grid, wall triple points regrown finer, no fill",
@@ -119,7 +120,8 @@ TEST_CASE("voronoi: NACA-7526 on an 800 x 800 grid, wall triple points regrown f
 
 TEST_CASE("voronoi: a boundary-layer metric stretches the triangles at the walls",
           "[app][voronoi]") {
-  const std::string out = "/tmp/homesh_voronoi_bl.msh";
+  const TempDir dir;
+  const std::string out = dir / "bl.msh";
   const auto iso = run_homesh(geo + "plate_hole.geo -m voronoi " + out);
   const auto bl = run_homesh(geo + "plate_hole.geo -m voronoi:metric=bl " + out);
   INFO(bl.output);
@@ -127,12 +129,12 @@ TEST_CASE("voronoi: a boundary-layer metric stretches the triangles at the walls
   CHECK(bl.output.find("walls: 1 curves not in a group 'farfield'") != std::string::npos);
   const std::string nodes = R"(voronoi: metric [^\n]*: (\d+) nodes)";
   CHECK(logged(bl.output, nodes) > logged(iso.output, nodes) + 30);
-  std::remove(out.c_str());
 }
 
 TEST_CASE("voronoi: seeds and metric from files, errors naming file and line", "[app][voronoi]") {
-  const std::string out = "/tmp/homesh_voronoi_files.msh";
-  const std::string seeds = "/tmp/homesh_voronoi_seeds.txt";
+  const TempDir dir;
+  const std::string out = dir / "files.msh";
+  const std::string seeds = dir / "seeds.txt";
   std::ofstream(seeds) << "# interior seeds\n0.75 0.75\n-0.75 0.75\n-0.75 -0.75\n0.75 -0.75\n";
   auto r = run_homesh(geo + "plate_hole.geo -m voronoi:seeds=" + seeds + " " + out);
   INFO(r.output);
@@ -147,7 +149,7 @@ TEST_CASE("voronoi: seeds and metric from files, errors naming file and line", "
   CHECK(r.output.find(seeds + ":2: seed (0.75, 0.75) coincides with the seed on line 1") !=
         std::string::npos);
 
-  const std::string metric = "/tmp/homesh_voronoi_metric.txt";
+  const std::string metric = dir / "metric.txt";
   std::ofstream(metric) << "grid 2 2 -1 -1 1 1\n100 0 100\n100 0 100\n100 0 100\n100 0 100\n";
   r = run_homesh(geo + "plate_hole.geo -m voronoi:metric=" + metric + " " + out);
   REQUIRE(r.exit_code == 0);
@@ -164,12 +166,12 @@ TEST_CASE("voronoi: seeds and metric from files, errors naming file and line", "
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("front=rows: not an integer (front is 'all' or a number of rows)") !=
         std::string::npos);
-  for (const auto& f : {out, seeds, metric}) std::remove(f.c_str());
 }
 
 TEST_CASE("voronoi: front rows, Lloyd's iteration and smoothing make triangles better than Gmsh's",
           "[app][voronoi]") {
-  const std::string out = "/tmp/homesh_voronoi_lloyd.msh";
+  const TempDir dir;
+  const std::string out = dir / "lloyd.msh";
   const auto poisson =
       run_homesh(geo + "plate_hole.geo -m voronoi:front=0:lloyd=0:smooth=0 -m quality " + out);
   const auto no_front = run_homesh(geo + "plate_hole.geo -m voronoi:front=0 -m quality " + out);
@@ -204,14 +206,14 @@ TEST_CASE("voronoi: front rows, Lloyd's iteration and smoothing make triangles b
   CHECK(min2 > min1 + 0.05);
   CHECK(mean2 > mean_gmsh);
   CHECK(min2 > min_gmsh);
-  std::remove(out.c_str());
 }
 
 TEST_CASE("voronoi: the metric from a Gmsh tensor view, merged from a file or by the .geo",
           "[app][voronoi]") {
-  const std::string out = "/tmp/homesh_voronoi_view.msh";
-  const std::string pos = "/tmp/homesh_voronoi_metric.pos";
-  const std::string with_view = "/tmp/homesh_voronoi_view.geo";
+  const TempDir dir;
+  const std::string out = dir / "view.msh";
+  const std::string pos = dir / "metric.pos";
+  const std::string with_view = dir / "view.geo";
   // Size 0.1 everywhere (M = 100 I) on two triangles over [-2, 2]^2, as in
   // the metric file test above: 80 boundary lines on the square, 32 on the hole.
   std::string tensor;
@@ -235,5 +237,4 @@ TEST_CASE("voronoi: the metric from a Gmsh tensor view, merged from a file or by
   r = run_homesh(geo + "plate_hole.geo -m voronoi:metric=" + pos + " " + out);
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("1 components per value, a metric needs a tensor (9)") != std::string::npos);
-  for (const auto& f : {out, pos, with_view}) std::remove(f.c_str());
 }

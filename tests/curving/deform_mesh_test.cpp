@@ -131,7 +131,8 @@ TEST_CASE("an impossible deformation stops at the last valid state", "[curving]"
   REQUIRE(r.reached < 1.0);
   REQUIRE(r.invalid_at_failure > 0);
   REQUIRE(mesh_validity(r.mesh).invalid == 0);
-  REQUIRE_THROWS_AS(deform_mesh(m, target, boundary_nodes(m), DeformOptions{"nosuch"}), Error);
+  opt.formulation = "nosuch";
+  REQUIRE_THROWS_AS(deform_mesh(m, target, boundary_nodes(m), opt), Error);
 }
 
 TEST_CASE("layers = k solves near the moving nodes only; enough layers give the full solve",

@@ -1,7 +1,6 @@
 #include <gmsh.h>
 
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -10,6 +9,7 @@
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
 #include "../support/gmsh_session.h"
+#include "../support/temp_dir.h"
 
 using namespace homesh;
 
@@ -79,7 +79,8 @@ TEST_CASE("model -> core -> model -> .msh -> model keeps everything, p = 1..6", 
 
     Field f{"node index", Field::Kind::ElementNode, m1.tri.cast<double>()};
     const auto views = gmsh_adapter::add_views({f}, tags);
-    const std::string path = "/tmp/homesh_round_trip_" + std::to_string(p) + ".msh";
+    const test::TempDir dir;
+    const std::string path = dir / "round_trip.msh";
     gmsh_adapter::write_msh(path, views, "test provenance");
 
     gmsh::clear();
@@ -102,8 +103,6 @@ TEST_CASE("model -> core -> model -> .msh -> model keeps everything, p = 1..6", 
       REQUIRE(data[k].size() == static_cast<std::size_t>(m1.tri.rows()));
       for (Eigen::Index i = 0; i < m1.tri.rows(); ++i) REQUIRE(data[k][i] == m1.tri(i, e));
     }
-    std::remove(path.c_str());
-    std::remove((path + ".opt").c_str());
   }
 }
 
@@ -114,7 +113,8 @@ TEST_CASE("write_msh records provenance and a sidecar that adapts every view", "
   const auto tags = gmsh_adapter::write_model(m);
   Field a{"a", Field::Kind::Element, Eigen::MatrixXd::Ones(1, m.num_triangles())};
   Field b{"b", Field::Kind::Element, Eigen::MatrixXd::Zero(1, m.num_triangles())};
-  const std::string path = "/tmp/homesh_provenance.msh";
+  const test::TempDir dir;
+  const std::string path = dir / "provenance.msh";
   gmsh_adapter::write_msh(path, gmsh_adapter::add_views({a, b}, tags), "homesh x -m y");
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -125,6 +125,4 @@ TEST_CASE("write_msh records provenance and a sidecar that adapts every view", "
   REQUIRE(options == gmsh_adapter::sidecar_options(2));
   REQUIRE(options.find("View[1].AdaptVisualizationGrid = 1;") != std::string::npos);
   REQUIRE(options.find("View[2]") == std::string::npos);
-  std::remove(path.c_str());
-  std::remove((path + ".opt").c_str());
 }

@@ -5,7 +5,7 @@ writes its quality views; scripts/examples/gui_shot.py opens it in `gmsh` under
 xvfb-run and prints the Q4 view, once as a user sees it (the .msh.opt sidecar
 sets AdaptVisualizationGrid = 1) and once with AdaptVisualizationGrid = 0, the
 view drawn on the straight triangles through the corner nodes. Pictures are
-kept in out/gui/.
+kept in pytest's temporary folder of the run (gui/, the last three runs kept).
 
 Curved drawing is checked geometrically on the hole, the one background
 region inside the plate: its edge is a circle (every edge pixel at the same
@@ -26,7 +26,6 @@ import pytest
 import homesh
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-OUT = os.path.join(ROOT, "out", "gui")
 sys.path.insert(0, os.path.join(ROOT, "scripts", "examples"))
 import gui_shot  # noqa: E402
 
@@ -42,16 +41,16 @@ def cli():
 
 
 @pytest.fixture(scope="module")
-def pictures():
-    os.makedirs(OUT, exist_ok=True)
-    msh = os.path.join(OUT, "plate_p4.msh")
+def pictures(tmp_path_factory):
+    out = tmp_path_factory.mktemp("gui")
+    msh = str(out / "plate_p4.msh")
     log = subprocess.run([cli(), os.path.join(ROOT, "geo", "plate_hole.geo"), "-m", "mesh:factor=4",
                           "-m", "curve:p=4", "-m", "quality", msh],
                          check=True, capture_output=True, text=True).stdout
     assert "validity: 0 invalid of" in log
     shots = {}
     for name, adapt in (("curved", None), ("straight", 0)):
-        png = gui_shot.render(msh, os.path.join(OUT, f"plate_p4_{name}.png"), view="Q4",
+        png = gui_shot.render(msh, str(out / f"plate_p4_{name}.png"), view="Q4",
                               size=(700, 700), adapt=adapt, scale_bar=False)
         shots[name] = (matplotlib.image.imread(png)[:, :, :3] * 255).round().astype(np.uint8)
     return shots

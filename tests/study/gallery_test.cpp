@@ -6,10 +6,9 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <fstream>
 
+#include "../support/temp_dir.h"
 #include "core/error.h"
 #include "element/reference_nodes.h"
 #include "optim/ideal_element.h"
@@ -80,8 +79,8 @@ TEST_CASE("gallery: the elements are what their descriptions say", "[study]") {
 }
 
 TEST_CASE("gallery files are checked", "[study]") {
-  const std::string path =
-      (std::filesystem::temp_directory_path() / "homesh_gallery_test_bad.csv").string();
+  const test::TempDir dir;
+  const std::string path = dir / "bad_gallery.csv";
   const auto rejects = [&](const std::string& text) {
     std::ofstream(path) << text;
     CHECK_THROWS_AS(read_gallery(path), Error);
@@ -90,7 +89,6 @@ TEST_CASE("gallery files are checked", "[study]") {
   rejects("element,order,node,x,y\nT1,1,0,0,0\nT1,1,1,1,0\n");              // too few nodes
   rejects("element,order,node,x,y\nT1,1,0,0,0\nT1,1,2,1,0\nT1,1,1,0,1\n");  // out of order
   rejects("element,order,node,x,y\nT1,1,0,0,zero\n");
-  std::remove(path.c_str());
   CHECK_THROWS_AS(read_gallery("no/such/gallery.csv"), Error);
   CHECK_THROWS_AS(gallery_element(gallery(), "T13"), Error);
 }

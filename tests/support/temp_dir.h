@@ -1,30 +1,33 @@
 #pragma once
-// Test helper: a fresh folder of its own per test (mkdtemp), removed with
-// everything in it when the test ends, so that runs never collide.
+// Test helper: a directory of one test's own, made by mkdtemp under the
+// system's temporary folder ($TMPDIR, else /tmp) and removed with everything
+// in it at the end of the scope, so tests running at once (ctest -j, or two
+// checkouts on one machine) never write to the same path.
 #include <stdlib.h>
 
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 namespace homesh::test {
 
 class TempDir {
  public:
   TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "homesh-test-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
+    std::string name = (std::filesystem::temp_directory_path() / "homesh_test.XXXXXX").string();
+    if (!mkdtemp(name.data())) throw std::runtime_error("mkdtemp " + name + " failed");
+    path_ = name;
   }
   ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
   }
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;
 
   const std::string& path() const { return path_; }
-  /// `name` inside the folder.
+  /// The path of the file `name` in the directory.
   std::string operator/(const std::string& name) const { return path_ + "/" + name; }
 
  private:

@@ -74,7 +74,7 @@ TEST_CASE("MetricField: Shepard weights of the 4 corners and the speed average",
   CHECK(field.speed({5.0, 3.0}, N) == Approx(metric_speed(M[5].inverse(), N)));
   CHECK(field.metric_at(coarse.point(0, 0)).isApprox(M[0]));
   // metric_at, with its single division, is the Shepard average of stencil().
-  for (const Eigen::Vector2d q :
+  for (const Eigen::Vector2d& q :
        {p, Eigen::Vector2d(0.2, 0.9), Eigen::Vector2d(2.7, 0.05), Eigen::Vector2d(-1.0, 0.5)}) {
     const ShepardStencil w = field.stencil(q);
     Eigen::Matrix2d average = Eigen::Matrix2d::Zero();

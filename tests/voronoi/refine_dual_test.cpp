@@ -54,7 +54,9 @@ TEST_CASE("a dual that checks needs no refinement", "[voronoi][refine]") {
   p.seeds.resize(2, 5);
   p.seeds << 0.5, 0.2, 0.82, 0.75, 0.28,  //
       0.48, 0.25, 0.22, 0.8, 0.72;
-  const RefinedDual r = refine_dual(p, "fast_marching", {}, {0, 2.0});
+  RefineOptions no_rounds;
+  no_rounds.max_rounds = 0;
+  const RefinedDual r = refine_dual(p, "fast_marching", {}, no_rounds);
   CHECK(r.ok());
   CHECK(r.added.empty());
   CHECK(dual_faults(p.seeds, r.result).cols() == 0);

@@ -56,7 +56,9 @@ void dump(const test::ThesisExample& e, const std::string& engine) {
   const VoronoiProblem& p = e.problem;
   const auto start = std::chrono::steady_clock::now();
   // As the thesis grows them: no seeds added (the faults are drawn instead).
-  const RefinedDual r = refine_dual(p, engine, {}, {0, 2.0});
+  RefineOptions no_rounds;
+  no_rounds.max_rounds = 0;
+  const RefinedDual r = refine_dual(p, engine, {}, no_rounds);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string name = e.name + "_" + engine;
