@@ -80,7 +80,7 @@ TEST_CASE("Mutated .msh files never crash or hang homesh", "[app][robustness]") 
   const char* env = std::getenv("HOMESH_MUTANTS");
   const int per_base = env ? std::atoi(env) : 40;
   std::vector<std::string> bases;
-  for (const std::string& flags :
+  for (const char* flags :
        {"-format msh22", "-format msh41", "-format msh22 -bin", "-format msh41 -bin",
         "-format msh41 -order 2"}) {
     const std::string base = dir / ("base" + std::to_string(bases.size()) + ".msh");
