@@ -2,14 +2,18 @@
 """Markdown reference of homesh's stages, their options and the quality measures.
 
 The README's reference sections are generated, not written: the stages and
-options come from the stage registry (`homesh.stages()`, the Python module),
-the measures from the measure registry (`homesh --measures`). Regenerate with
+options come from the stage registry (`homesh.stages()`, the Python module:
+each stage's option table, with the defaults of the options structs), the
+measures from the measure registry (`homesh --measures`). Regenerate the
+README's reference (from its "### Stages" to its end) with
 
-  PYTHONPATH=build/python scripts/gen_reference.py > /tmp/reference.md
+  PYTHONPATH=build/python scripts/gen_reference.py --readme README.md
 
-and paste the sections into README.md.
+or print it with no --readme; tests/python/test_reference.py checks that the
+README is up to date.
 
 Usage: gen_reference.py [--homesh build/homesh] [--sections stages,options,measures]
+                        [--readme README.md]
 """
 import argparse
 import os
@@ -69,21 +73,10 @@ def measures_table(rows):
     return "\n".join(table)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    default_binary = os.path.join(os.path.dirname(homesh.__file__), "..", "homesh")
-    parser.add_argument("--homesh", default=os.path.normpath(default_binary),
-                        help="the homesh command line (default: beside the Python module)")
-    parser.add_argument("--sections", default=",".join(SECTIONS),
-                        help="comma-separated, from " + ", ".join(SECTIONS))
-    args = parser.parse_args()
-    wanted = args.sections.split(",")
-    unknown = set(wanted) - set(SECTIONS)
-    if unknown:
-        parser.error(f"unknown section(s) {', '.join(sorted(unknown))}")
-
+def reference(binary, wanted=SECTIONS):
+    """The reference sections in `wanted`, as markdown."""
     stages = homesh.stages()
-    out = []  # markdown blocks, printed with a blank line between them
+    out = []  # markdown blocks, joined by a blank line
     if "stages" in wanted:
         out += ["### Stages", stages_table(stages)]
     if "options" in wanted:
@@ -93,8 +86,39 @@ def main():
                 "W is the Jacobian of the map from the ideal (unit equilateral) triangle to the "
                 "physical one, omega = det W, D = W^T W; every measure is normalised to [0, 1], "
                 "1 at the ideal element, 0 where omega <= 0 (invalid).",
-                measures_table(measures(args.homesh))]
-    print("\n\n".join(out))
+                measures_table(measures(binary))]
+    return "\n\n".join(out)
+
+
+README_START = "### Stages\n"
+
+
+def default_binary():
+    """The homesh command line beside the Python module (build/homesh)."""
+    return os.path.normpath(os.path.join(os.path.dirname(homesh.__file__), "..", "homesh"))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--homesh", default=default_binary(),
+                        help="the homesh command line (default: beside the Python module)")
+    parser.add_argument("--sections", default=",".join(SECTIONS),
+                        help="comma-separated, from " + ", ".join(SECTIONS))
+    parser.add_argument("--readme", help="rewrite this README's reference (all sections), "
+                        "from its '### Stages' to its end")
+    args = parser.parse_args()
+    wanted = args.sections.split(",")
+    unknown = set(wanted) - set(SECTIONS)
+    if unknown:
+        parser.error(f"unknown section(s) {', '.join(sorted(unknown))}")
+    if args.readme:
+        with open(args.readme) as f:
+            text = f.read()
+        head = text[:text.index(README_START)]
+        with open(args.readme, "w") as f:
+            f.write(head + reference(args.homesh) + "\n")
+        return 0
+    print(reference(args.homesh, wanted))
     return 0
 
 

@@ -84,7 +84,7 @@ class Benchmark:
         self.triangles = r["triangles"]
         res = r["results"]
         return {"theta_max": int(res["theta_max"]), "N": round(res["mean_iterations"], 1),
-                "worst_ratio": round(res["worst_ratio"], 5)}
+                "worst_ratio": round(res["worst"], 5)}
 
 
 def run_table(bench, thesis, nus, heat):

@@ -122,7 +122,7 @@ def main():
             rows.append({"case": case, "formulation": name, "nu": nu,
                          "heat": HEAT.get(name, 1), "theta_max": int(res["theta_max"]),
                          "thesis_theta_max": thesis[(case, nu)],
-                         "worst_ratio": round(res["worst_ratio"], 5),
+                         "worst_ratio": round(res["worst"], 5),
                          "mean_iterations": round(res["mean_iterations"], 1)})
             print(f"case {case} {name:12s} nu {nu:.2f}: theta_max {rows[-1]['theta_max']:3d} "
                   f"(thesis {rows[-1]['thesis_theta_max']})", flush=True)

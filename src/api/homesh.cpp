@@ -68,7 +68,7 @@ std::vector<StageInfo> stages() {
 Result run(const std::string& name, const StageOptions& options) {
   return guarded([&] {
     const Stage& s = stage(name);
-    const Options checked(s.name, s.options, options);
+    const std::any checked = s.parse(options);
     Context ctx;
     ctx.input = "the current Gmsh model";
     configure_log(ctx.log);

@@ -14,12 +14,14 @@
 //   homesh::api::write("plate.msh");                // mesh, views, .opt sidecar
 //
 // Options are the CLI stage options (`homesh --help STAGE`), values written
-// as on the command line ({"nu", "0.45"}, {"measures", "Q4,Q17"}). Every
+// as on the command line ({"nu", "0.45"}, {"measures", "Q4,Q17"}), all read
+// and checked before the stage starts. Every
 // failure throws homesh::Error with the CLI's message (Gmsh's own errors as
 // "Gmsh: ...").
 #include <functional>
 #include <map>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/error.h"
@@ -28,6 +30,9 @@ namespace homesh::api {
 
 /// Options of one stage: option name -> value as on the command line.
 using StageOptions = std::map<std::string, std::string>;
+
+/// A number a stage reports: a count (int), a flag (bool) or a measurement (double).
+using ResultValue = std::variant<bool, int, double>;
 
 /// Certified validity of the model's mesh (Bezier bounds of the Jacobian
 /// determinant; quality/mesh_validity.h).
@@ -42,8 +47,10 @@ struct Validity {
 /// What a stage did to the current model.
 struct Result {
   /// Named numbers the stage reports (e.g. rotate's theta_max, quality's
-  /// invalid and Q4_min); empty for stages that report none.
-  std::map<std::string, double> results;
+  /// invalid and Q4_min); empty for stages that report none. Validity's
+  /// names are the names throughout: quality reports triangles, invalid,
+  /// worst and worst_triangle; rotate the worst minJ/maxJ of its steps as worst.
+  std::map<std::string, ResultValue> results;
   bool has_mesh = false;   ///< the model holds a mesh after the stage
   int order = 0;           ///< element order of that mesh
   int nodes = 0;

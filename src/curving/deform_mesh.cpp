@@ -148,8 +148,6 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
   if (opt.increments < 1) throw Error("deform_mesh: increments must be >= 1");
   if (opt.layers < 0) throw Error("deform_mesh: layers must be >= 0");
   if (!(opt.reach >= 0)) throw Error("deform_mesh: reach must be >= 0");
-  if (opt.layers > 0 && opt.reach > 0)
-    throw Error("deform_mesh: give layers or reach, not both");
   if (opt.layers > 0 || opt.reach > 0) return deform_region(m, target, prescribed, opt);
   const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
   const Eigen::Matrix2Xd start = m.x;

@@ -22,25 +22,37 @@
 
 namespace homesh {
 
+// The defaults are the curve stage's (measured on the boundary-layer meshes of
+// scripts/bench/curving_vs_gmsh.py, plate and NACA-7526, first cell 1e-3 and
+// 1e-4, p = 2-4: worst minJ/maxJ 0.96-0.99, against 0.89-0.95 for the thesis'
+// E = 1, nu = 0.4; scripts/bench/README.md): E = 1/Ae ("area"), nearly
+// incompressible, one increment, solved within 2 wall-triangle sizes. A nearly
+// incompressible material keeps the thin layer elements' areas, so the wall's
+// curvature is carried up through the layers instead of squashing the first
+// one; 1/Ae makes the small elements stiff as well.
 struct DeformOptions {
-  std::string formulation = "plain";
-  FormulationParams params;
+  std::string formulation = "area";  ///< a name of analogy_formulations()
+  FormulationParams params = [] {  // nu = 0.49, the other parameters as FormulationParams
+    FormulationParams p;
+    p.poisson = 0.49;
+    return p;
+  }();
   LinearSolverOptions solver;
-  int increments = 4;    ///< equal load increments from start to target
+  int increments = 1;    ///< equal load increments from start to target
   int max_halvings = 6;  ///< smallest step: the first increment / 2^max_halvings
-  /// 0: the elasticity is solved on the whole mesh. k > 0: only on the elements
-  /// within k element layers of the moving nodes (prescribed nodes whose target
-  /// differs from their position), the rest held still, as Gmsh's
-  /// Mesh.HighOrderNumLayers; cheaper on large meshes, the result differs.
+  /// 0: no effect. k > 0: solve only on the elements within k element layers of
+  /// the moving nodes (prescribed nodes whose target differs from their
+  /// position), the rest held still, as Gmsh's Mesh.HighOrderNumLayers; cheaper
+  /// on large meshes, the result differs. Replaces `reach`.
   int layers = 0;
-  /// 0: no effect. r > 0: solve only on the triangles with a vertex within r h_t
-  /// of the centroid of some triangle t with a moving node, h_t its longest
-  /// edge, the rest held still. The displacement of a curved wall edge decays
-  /// over about one edge length into the mesh (Saint-Venant), whatever the
-  /// number of thin layer elements stacked there, so unlike `layers` the
-  /// region does not shrink to a sliver in a boundary layer. Exclusive with
-  /// `layers`.
-  double reach = 0;
+  /// 0: the elasticity is solved on the whole mesh. r > 0: only on the
+  /// triangles with a vertex within r h_t of the centroid of some triangle t
+  /// with a moving node, h_t its longest edge, the rest held still. The
+  /// displacement of a curved wall edge decays over about one edge length into
+  /// the mesh (Saint-Venant), whatever the number of thin layer elements
+  /// stacked there, so unlike `layers` the region does not shrink to a sliver
+  /// in a boundary layer. Ignored when layers > 0.
+  double reach = 2;
 };
 
 struct DeformResult {

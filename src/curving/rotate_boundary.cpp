@@ -1,6 +1,7 @@
 #include "curving/rotate_boundary.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <cstdio>
@@ -50,6 +51,14 @@ void check(const Mesh& m, const std::vector<bool>& wall, const std::vector<bool>
   if (opt.substeps < 1) throw Error("rotate_boundary: substeps must be >= 1");
 }
 
+// The centre of the circle fitted to the wall's nodes.
+Eigen::Vector2d wall_centre(const Mesh& m, const std::vector<bool>& wall) {
+  Eigen::Matrix2Xd points(2, std::count(wall.begin(), wall.end(), true));
+  for (int i = 0, k = 0; i < m.num_nodes(); ++i)
+    if (wall[i]) points.col(k++) = m.x.col(i);
+  return fitted_circle_centre(points);
+}
+
 }  // namespace
 
 RotateResult rotate_boundary(const Mesh& m, const std::vector<bool>& wall,
@@ -67,6 +76,7 @@ RotateResult rotate_boundary(const Mesh& m, const std::vector<bool>& wall,
   RotateResult r;
   r.mesh = m;
   r.worst_ratio = start.worst;
+  r.centre = opt.centre ? *opt.centre : wall_centre(m, wall);
   Mesh current = m;
   Eigen::Matrix2Xd guess;
   long iterations = 0;
@@ -85,7 +95,7 @@ RotateResult rotate_boundary(const Mesh& m, const std::vector<bool>& wall,
       for (int i = 0; i < m.num_nodes(); ++i) {
         if (!prescribed[i]) continue;
         const Eigen::Vector2d x0 = m.x.col(i);
-        const Eigen::Vector2d to = wall[i] ? Eigen::Vector2d(R * (x0 - opt.centre) + opt.centre) : x0;
+        const Eigen::Vector2d to = wall[i] ? Eigen::Vector2d(R * (x0 - r.centre) + r.centre) : x0;
         bc.fix(i, Eigen::Vector2d(to - base.x.col(i)));
       }
       const ElasticitySolution u =

@@ -25,6 +25,7 @@
 // in degrees, anticlockwise positive. CG starts from the previous solve's
 // displacement. Each accepted step is reported as progress (core/progress.h).
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,9 @@ namespace homesh {
 constexpr int kMaxRotationSteps = 100000;
 
 struct RotateOptions {
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  /// Centre of the rotation; none: the centre of the circle fitted to the
+  /// wall's nodes (fitted_circle_centre), the hole's centre in the thesis.
+  std::optional<Eigen::Vector2d> centre;
   double step = 1.0;       ///< angle step h, degrees (its sign gives the sense)
   double max_angle = 360;  ///< stop once |angle| reaches it, degrees
   int substeps = 1;        ///< solves per step (incremental only)
@@ -57,15 +60,17 @@ struct RotateResult {
   double mean_iterations = 0;  ///< CG iterations per attempted step (the thesis' N); 0 for direct solvers
   double worst_ratio = 1;    ///< worst certified minJ/maxJ of m and every accepted step
   int invalid_at_failure = 0;  ///< invalid elements of the first rejected state
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< the centre used
 };
 
-/// Rotates the nodes with wall[i] about opt.centre step by step; nodes with
-/// prescribed[i] && !wall[i] stay where they are, the others follow the
-/// analogy. m must be certified valid; wall must be a subset of prescribed. The wall
+/// Rotates the nodes with wall[i] about opt.centre (or the fitted one) step
+/// by step; nodes with prescribed[i] && !wall[i] stay where they are, the
+/// others follow the analogy. m must be certified valid; wall must be a subset of prescribed. The wall
 /// nodes of the result lose their curve parameter (u = NaN): it no longer
 /// matches their position. Throws homesh::Error on an invalid m, bad sizes, an empty wall,
 /// a wall node not prescribed, step = 0, max_angle < 0, substeps < 1, an
-/// unknown formulation, or a failed solve.
+/// unknown formulation, no opt.centre and wall nodes fitting no circle (fewer
+/// than 3, collinear), or a failed solve.
 RotateResult rotate_boundary(const Mesh& m, const std::vector<bool>& wall,
                              const std::vector<bool>& prescribed, const RotateOptions& opt = {});
 

@@ -18,36 +18,6 @@ std::string node_text(const Mesh& m, int node) {
 
 }  // namespace
 
-std::vector<int> wall_curves(const Mesh& m, const std::vector<std::string>& walls) {
-  if (walls.empty()) throw Error("layers: no walls given (walls=NAME,... of curve groups or tags)");
-  std::vector<int> curves;
-  for (const std::string& w : walls) {
-    bool found = false;
-    for (const PhysicalGroup& g : m.physicals)
-      if (g.dim == 1 && g.name == w) {
-        curves.insert(curves.end(), g.entities.begin(), g.entities.end());
-        found = true;
-      }
-    if (!found && !w.empty() && w.find_first_not_of("0123456789") == std::string::npos) {
-      const int tag = std::stoi(w);
-      found = std::any_of(m.entities.begin(), m.entities.end(),
-                          [&](const Entity& e) { return e.dim == 1 && e.tag == tag; }) ||
-              std::find(m.line_entity.begin(), m.line_entity.end(), tag) != m.line_entity.end();
-      if (found) curves.push_back(tag);
-    }
-    if (!found) {
-      std::string known;
-      for (const PhysicalGroup& g : m.physicals)
-        if (g.dim == 1 && !g.name.empty()) known += (known.empty() ? "" : ", ") + g.name;
-      throw Error("layers: no wall '" + w + "': not a curve physical group (" +
-                  (known.empty() ? "none" : known) + ") nor a curve tag of the mesh");
-    }
-  }
-  std::sort(curves.begin(), curves.end());
-  curves.erase(std::unique(curves.begin(), curves.end()), curves.end());
-  return curves;
-}
-
 std::vector<WallLoop> wall_loops(const Mesh& m, const std::vector<int>& curves) {
   // Each undirected triangle edge -> the triangles listing it, with their direction.
   std::map<std::pair<int, int>, std::vector<std::pair<int, bool>>> edges;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "core/wall_curves.h"
 
 namespace homesh {
 
@@ -40,11 +41,6 @@ struct WallLoop {
     return i + 1 < size() ? nodes[i + 1] : closed ? nodes.front() : ends[1];
   }
 };
-
-/// Curve tags of the walls named in `walls`: each entry is the name of a
-/// physical group of dimension 1 (all its curves) or a curve tag. Throws
-/// homesh::Error naming an entry that is neither, with the known curve groups.
-std::vector<int> wall_curves(const Mesh& m, const std::vector<std::string>& walls);
 
 /// The boundary lines of m on `curves`, chained into closed loops and open
 /// chains (open chains first). Triangles must be counter-clockwise (valid).

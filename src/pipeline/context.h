@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/field.h"
@@ -14,13 +15,16 @@
 
 namespace homesh {
 
+using ResultValue = std::variant<bool, int, double>;
+
 struct Context {
   std::string input;
   bool has_cad = false;
   std::optional<Mesh> mesh;
   std::vector<Field> fields;
-  /// Named numbers the last stage reports (e.g. rotate's theta_max).
-  std::map<std::string, double> results;
+  /// Named results the last stage reports (e.g. rotate's theta_max): counts
+  /// as int, flags as bool, measurements as double.
+  std::map<std::string, ResultValue> results;
   Log log;
   /// Lines recorded in the output's provenance after the command line: what a
   /// reader of the file must know about how it was made (e.g. that the

@@ -132,18 +132,19 @@ void load_input(const std::string& path, Context& ctx) {
 }
 
 void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
-  // Resolve every stage and option first, so a typo fails before any work.
-  std::vector<std::pair<const Stage*, Options>> plan;
+  // Every stage's options read into its options struct first, so a typo or a
+  // bad value fails before any work.
+  std::vector<std::pair<const Stage*, std::any>> plan;
   for (const StageCall& c : calls) {
     const Stage& s = stage(c.name);
-    plan.emplace_back(&s, Options(s.name, s.options, c.given));
+    plan.emplace_back(&s, s.parse(c.given));
   }
   const bool meshes = std::any_of(plan.begin(), plan.end(),
                                   [](const auto& step) { return step.first->creates_mesh; });
   if (!ctx.mesh && !meshes) {
     ctx.log.info("{} has no mesh: meshing it with the mesh stage's defaults", ctx.input);
     const Stage& m = stage("mesh");
-    m.run(ctx, Options(m.name, m.options, {}));
+    m.run(ctx, m.parse({}));
   }
   set_progress(progress_wanted(ctx.log.quiet));
   for (std::size_t k = 0; k < plan.size(); ++k) {

@@ -15,7 +15,9 @@ namespace homesh {
 /// Gmsh fails on it.
 void load_input(const std::string& path, Context& ctx);
 
-/// Runs `calls` on `ctx` in order. A CAD input without a mesh is first meshed
+/// Runs `calls` on `ctx` in order, once every call's options are read and
+/// checked (homesh::Error naming the stage, option and value before any stage
+/// runs otherwise). A CAD input without a mesh is first meshed
 /// with the `mesh` stage's defaults unless some call creates a mesh itself.
 /// Long stages show progress on a terminal (core/progress.h: on when stderr
 /// is a terminal and ctx.log is not quiet, or as HOMESH_PROGRESS says), under

@@ -1,11 +1,17 @@
 #pragma once
-// A pipeline stage: a named transformation of the Context, declaring its
-// options with defaults and help (NekMesh-style modules).
+// A pipeline stage: a named transformation of the Context, with the table of
+// its options (pipeline/option_table.h; NekMesh-style modules). A stage is a
+// thin adapter: `parse` reads the user's strings into the options struct of
+// its library entry point (before any stage runs, so a bad option fails
+// fast), `run` adapts the Gmsh model to that entry point.
+#include <any>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "pipeline/context.h"
+#include "pipeline/option_table.h"
 #include "pipeline/options.h"
 
 namespace homesh {
@@ -13,10 +19,37 @@ namespace homesh {
 struct Stage {
   std::string name;
   std::string summary;
+  /// The options with their defaults, from the stage's option table.
   std::vector<OptionSpec> options;
-  std::function<void(Context&, const Options&)> run;
+  /// The given options read into the stage's options struct (held in the
+  /// std::any); homesh::Error naming the stage, option and value if refused.
+  std::function<std::any(const std::map<std::string, std::string>& given)> parse;
+  /// Runs the stage with options made by `parse`.
+  std::function<void(Context&, const std::any& options)> run;
   /// The stage makes a new mesh from the CAD (so none is needed before it).
   bool creates_mesh = false;
 };
+
+/// The options struct of a stage without options.
+struct NoOptions {};
+
+/// The stage called `name` whose options are read by `table` into a T and
+/// passed to `run`.
+template <class T>
+Stage make_stage(std::string name, std::string summary, const OptionTable<T>& table,
+                 void (*run)(Context&, const T&), bool creates_mesh = false) {
+  Stage s;
+  s.name = name;
+  s.summary = std::move(summary);
+  s.options = table.specs();
+  s.parse = [table, name](const std::map<std::string, std::string>& given) {
+    return std::any(table.parse(name, given));
+  };
+  s.run = [run](Context& ctx, const std::any& options) {
+    run(ctx, std::any_cast<const T&>(options));
+  };
+  s.creates_mesh = creates_mesh;
+  return s;
+}
 
 }  // namespace homesh

@@ -86,9 +86,11 @@ PYBIND11_MODULE(homesh, m) {
     }
   });
   m.def("run", &run_stage, py::arg("stage"),
-        "Run a stage (see stages()) on the current Gmsh model, options as keyword arguments; "
-        "returns order, node and triangle counts, the tags of the views it added, the numbers "
-        "the stage reports (results) and the mesh's certified validity (see validity()).");
+        "Run a stage (see stages()) on the current Gmsh model, options as keyword arguments "
+        "(checked before the stage starts); returns order, node and triangle counts, the tags "
+        "of the views it added, the numbers the stage reports (results: counts as int, flags "
+        "as bool, measurements as float) and the mesh's certified validity (see validity(), "
+        "whose key names quality's results share).");
   m.def("write", &write_file, py::arg("path"), py::arg("keep_invalid") = false,
         "Certify the current model's mesh, then write it and its views to a .msh file (the MSH "
         "version and encoding of Gmsh's options, atomically) with its .opt sidecar; refuses a mesh "
@@ -98,16 +100,21 @@ PYBIND11_MODULE(homesh, m) {
   m.def("validity", [] { return validity_dict(api::validity()); },
         "Certified validity of the current model's mesh: triangles, invalid, worst minJ/maxJ, "
         "its triangle (1-based) and the CLI's validity line.");
-  m.def("stages", [] {
-    py::list out;
-    for (const api::StageInfo& s : api::stages()) {
-      py::dict options;
-      for (const auto& o : s.options) options[o.name.c_str()] = py::make_tuple(o.default_value, o.help);
-      out.append(py::dict(py::arg("name") = s.name, py::arg("summary") = s.summary,
-                          py::arg("options") = options));
-    }
-    return out;
-  });
+  m.def(
+      "stages",
+      [] {
+        py::list out;
+        for (const api::StageInfo& s : api::stages()) {
+          py::dict options;
+          for (const auto& o : s.options)
+            options[o.name.c_str()] = py::make_tuple(o.default_value, o.help);
+          out.append(py::dict(py::arg("name") = s.name, py::arg("summary") = s.summary,
+                              py::arg("options") = options));
+        }
+        return out;
+      },
+      "Every stage, in the order of homesh --list: name, summary and options {name: (default, "
+      "help)}, the defaults those of the library's options structs (homesh --help STAGE).");
   // One function per stage, named after it, so `homesh.order(p=4)` reads like the CLI.
   for (const api::StageInfo& s : api::stages()) {
     const std::string name = s.name;

@@ -32,7 +32,7 @@ Eigen::Matrix2Xd region_centroids(const CartesianGrid& grid, const Eigen::Vector
                                   const std::vector<Eigen::Matrix2d>& seed_metrics = {});
 
 struct LloydOptions {
-  int iterations = 3;  ///< growths and moves
+  int iterations = 10;  ///< growths and moves
   /// A seed moves only if its centroid is this many cells (ds) inside the
   /// domain and from every other seed; otherwise it stays.
   double clearance_cells = 2.0;

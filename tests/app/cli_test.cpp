@@ -134,6 +134,39 @@ std::string msh22(const TempDir& dir, const std::string& name,
 
 }  // namespace
 
+TEST_CASE("every stage's options are checked before the first stage runs", "[app]") {
+  // The issue's typo (',' for ':'): refused with stage, option and value, and
+  // nothing meshed first.
+  const std::string out = "/tmp/homesh_cli_plan.msh";
+  std::remove(out.c_str());
+  auto r = run_homesh(geo + "naca.geo -m mesh -m curve:p=3,nu=0.3 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code != 0);
+  CHECK(r.output.find("homesh: error: stage 'curve': option p=3,nu=0.3: not an integer (options "
+                      "are separated by ':', as in curve:p=3:nu=0.3)") != std::string::npos);
+  const std::regex mesh_log(R"((^|\n)mesh: )"), order_log(R"((^|\n)order: )");
+  CHECK_FALSE(std::regex_search(r.output, mesh_log));
+  CHECK(r.output.find("Meshing") == std::string::npos);
+  CHECK_FALSE(exists(out));
+  // The same for a value out of range in the last stage, after two that would work.
+  r = run_homesh(geo + "naca.geo -m mesh -m order:p=2 -m quality:tolerance=2 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code != 0);
+  CHECK(r.output.find("stage 'quality': option tolerance=2: out of range (0, 1)") !=
+        std::string::npos);
+  CHECK_FALSE(std::regex_search(r.output, mesh_log));
+  CHECK_FALSE(std::regex_search(r.output, order_log));
+  // p=3.0 is the integer 3, p=3.5 is not an integer.
+  r = run_homesh(geo + "plate_hole.geo -m order:p=3.0 -m info " + out);
+  CHECK(r.exit_code == 0);
+  CHECK(r.output.find("\norder: p = 3,") != std::string::npos);
+  r = run_homesh(geo + "plate_hole.geo -m order:p=3.5 " + out);
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("stage 'order': option p=3.5: not an integer") != std::string::npos);
+  std::remove(out.c_str());
+  std::remove((out + ".opt").c_str());
+}
+
 TEST_CASE("meshes homesh cannot take are refused with the reason", "[app]") {
   const TempDir dir;
   const std::string out = dir / "badmesh.msh";

@@ -59,10 +59,10 @@ TEST_CASE("curve: NACA-7526 at order 4, valid, with a bad option refused", "[app
   REQUIRE(std::stod(m[1]) > 0.9);
   r = run_homesh(geo + "naca.geo -m mesh -m curve:p=4:formulation=magic " + out);
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("unknown formulation 'magic'") != std::string::npos);
+  REQUIRE(r.output.find("stage 'curve': option formulation=magic: expected plain, area,") != std::string::npos);
   r = run_homesh(geo + "naca.geo -m mesh -m curve:p=4:nu=0.5 " + out);
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("nu must be in (-1, 0.5)") != std::string::npos);
+  REQUIRE(r.output.find("stage 'curve': option nu=0.5: out of range (-1, 0.5)") != std::string::npos);
 }
 
 namespace {
@@ -186,5 +186,5 @@ TEST_CASE("curve: a bare .msh is curved onto splines rebuilt from its linear bou
   }
   r = run_homesh(lin + " -m curve:p=3:corner=180 " + out);
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("corner = 180 must be in (0, 180) degrees") != std::string::npos);
+  REQUIRE(r.output.find("stage 'curve': option corner=180: out of range (0, 180)") != std::string::npos);
 }

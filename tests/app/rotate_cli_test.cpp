@@ -96,14 +96,14 @@ TEST_CASE("rotate: an unknown wall lists the physical curves; bad options refuse
   const std::string base = geo + "plate_hole.geo -m mesh:factor=2 -m order:p=2 -m rotate:";
   auto r = run_homesh(base + "wall=magic");
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("no physical curve named 'magic' (physical curves: hole, farfield)") !=
+  REQUIRE(r.output.find("no wall 'magic': not a curve physical group (hole, farfield)") !=
           std::string::npos);
   r = run_homesh(base + "step=0");
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("step must be nonzero") != std::string::npos);
+  REQUIRE(r.output.find("option step=0: must be nonzero") != std::string::npos);
   r = run_homesh(base + "centre=1");
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("centre must be auto or x,y") != std::string::npos);
+  REQUIRE(r.output.find("option centre=1: expected auto or two numbers x,y") != std::string::npos);
   r = run_homesh(base + "pose=somewhere");
   REQUIRE(r.exit_code != 0);
   REQUIRE(r.output.find("expected current or initial") != std::string::npos);

@@ -71,6 +71,7 @@ TEST_CASE("rotating the inner circle of an annulus: small angles valid, large on
   for (int i = 0; i < s.m.num_nodes(); ++i)
     if (s.boundary[i]) s.m.node_class[i] = {1, s.inner[i] ? 1 : 2, 0.5};
   RotateOptions opt;
+  opt.centre = Eigen::Vector2d::Zero();
   opt.max_angle = 6;
   opt.step = 2;
   RotateResult r = rotate_boundary(s.m, s.inner, s.boundary, opt);
@@ -114,6 +115,7 @@ TEST_CASE("clockwise rotation of the mirrored mesh is the anticlockwise one, mir
     for (int k = 0; k < 6; ++k) mirrored.m.tri(k, e) = s.m.tri(flip[k], e);
   // The same up to quadrature (the rules are not symmetric under relabelling).
   RotateOptions opt;
+  opt.centre = Eigen::Vector2d::Zero();
   opt.step = 5;
   const RotateResult ccw = rotate_boundary(s.m, s.inner, s.boundary, opt);
   opt.step = -5;
@@ -143,6 +145,7 @@ TEST_CASE("a wall covering the whole boundary turns the mesh rigidly, any angle"
     for (bool total : {false, true}) {
       CAPTURE(f.name, total);
       RotateOptions opt;
+      opt.centre = Eigen::Vector2d::Zero();
       opt.total = total;
       opt.step = 45;
       opt.max_angle = 360;
@@ -162,6 +165,7 @@ TEST_CASE("theta_max grows with the room the annulus gives the rotation", "[curv
   // falls as b grows (in the linear solution the hoop displacement is
   // A r + B / r), so the first inverted element comes later.
   RotateOptions opt;
+  opt.centre = Eigen::Vector2d::Zero();
   opt.step = 2;
   double previous = 0;
   for (double b : {1.3, 1.6, 2.2}) {
@@ -194,6 +198,7 @@ TEST_CASE("rotate_boundary refuses bad arguments", "[curving][rotate]") {
   REQUIRE_THROWS_AS(rotate_boundary(s.m, s.inner, none), Error);
   REQUIRE_THROWS_AS(rotate_boundary(s.m, s.inner, {true}), Error);
   RotateOptions opt;
+  opt.centre = Eigen::Vector2d::Zero();
   opt.step = 0;
   REQUIRE_THROWS_AS(rotate_boundary(s.m, s.inner, s.boundary, opt), Error);
   opt.step = 1;

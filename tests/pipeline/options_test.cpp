@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/error.h"
+#include "pipeline/option_table.h"
 #include "pipeline/stage_registry.h"
 
 using namespace homesh;
@@ -19,33 +20,112 @@ TEST_CASE("stage calls parse name and key=value pairs", "[pipeline]") {
   REQUIRE_THROWS_WITH(parse_stage_call("order:p=2:p=3"), Catch::Contains("given twice"));
 }
 
-TEST_CASE("options fall back to defaults and reject bad values by name", "[pipeline]") {
-  const std::vector<OptionSpec> specs = {{"p", "2", ""}, {"r", "0.5", ""}, {"m", "Q4,Q17", ""},
-                                         {"keep", "false", ""}};
-  const Options o("order", specs, {{"p", "4"}});
-  REQUIRE(o.get_int("p", 1, 10) == 4);
-  REQUIRE(o.get_double("r") == 0.5);
-  REQUIRE(o.get_list("m") == std::vector<std::string>{"Q4", "Q17"});
-  REQUIRE_FALSE(o.get_bool("keep"));
-  REQUIRE_THROWS_WITH(Options("order", specs, {{"q", "1"}}),
-                      Catch::Contains("unknown option 'q'") && Catch::Contains("p, r, m, keep"));
-  REQUIRE_THROWS_WITH(Options("order", specs, {{"p", "0"}}).get_int("p", 1, 10),
-                      Catch::Contains("p=0") && Catch::Contains("out of range [1, 10]"));
-  REQUIRE_THROWS_WITH(Options("order", specs, {{"p", "4x"}}).get_int("p", 1, 10),
-                      Catch::Contains("not an integer"));
-  REQUIRE_THROWS_WITH(Options("order", specs, {{"r", "nan"}}).get_double("r"),
-                      Catch::Contains("not a finite number"));
-  REQUIRE_THROWS_WITH(Options("order", specs, {{"r", ""}}).get_double("r"),
-                      Catch::Contains("not a number"));
-  REQUIRE_THROWS_WITH(Options("order", specs, {{"keep", "maybe"}}).get_bool("keep"),
-                      Catch::Contains("not a boolean"));
-  const std::vector<OptionSpec> choice = {{"v", "fixed", ""}};
-  REQUIRE(Options("curve", choice, {}).get_choice("v", {"fixed", "free"}) == "fixed");
-  REQUIRE(Options("curve", choice, {{"v", "free"}}).get_choice("v", {"fixed", "free"}) == "free");
-  REQUIRE_THROWS_WITH(Options("curve", choice, {{"v", "x"}}).get_choice("v", {"fixed", "free"}),
-                      Catch::Contains("stage 'curve': option v=x: expected fixed or free"));
-  REQUIRE_THROWS_WITH(Options("curve", choice, {{"v", "x"}}).get_choice("v", {"a", "b", "c"}),
-                      Catch::Contains("expected a, b or c"));
+namespace {
+
+template <class V>
+std::string refused(const Parser<V>& p, const std::string& text) {
+  V v{};
+  return p.read(text, v);
+}
+
+template <class V>
+V value(const Parser<V>& p, const std::string& text) {
+  V v{};
+  REQUIRE(p.read(text, v).empty());
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("parsers read typed values and say why they refuse one", "[pipeline]") {
+  const Parser<int> p = integer(1, 10);
+  CHECK(value(p, "4") == 4);
+  CHECK(value(p, "3.0") == 3);
+  CHECK(value(p, "3e0") == 3);
+  CHECK(refused(p, "3.5") == "not an integer");
+  CHECK(refused(p, "4x") == "not an integer");
+  CHECK(refused(p, "nan") == "not an integer");
+  CHECK(refused(p, "") == "not an integer");
+  CHECK(refused(p, "0") == "out of range [1, 10]");
+  CHECK(refused(p, "1e30") == "out of range [1, 10]");
+  const Parser<int> rows = integer(0, 5, {{"all", 1000}});
+  CHECK(value(rows, "all") == 1000);
+  CHECK(rows.show(1000) == "all");
+  CHECK(rows.show(2) == "2");
+  CHECK(refused(rows, "some") == "not an integer nor 'all'");
+
+  CHECK(value(real(), "1e-3") == 1e-3);
+  CHECK(refused(real(), "inf") == "not a finite number");
+  CHECK(refused(real(), " 1") == "not a finite number");
+  CHECK(refused(real(-1, 0.5, "()"), "0.5") == "out of range (-1, 0.5)");
+  CHECK(value(real(-1, 0.5, "(]"), "0.5") == 0.5);
+  CHECK(refused(real(0, INFINITY, "(]"), "0") == "must be > 0");
+  CHECK(refused(real(0), "-1") == "must be >= 0");
+  CHECK(real().show(0.001) == "0.001");
+
+  CHECK(value(boolean(), "yes"));
+  CHECK_FALSE(value(boolean(), "off"));
+  CHECK(boolean().show(true) == "true");
+  CHECK(refused(one_of({"a", "b", "c"}), "x") == "expected a, b or c");
+  CHECK(refused(choice<bool>({{"fixed", true}, {"free", false}}), "x") ==
+        "expected fixed or free");
+  CHECK(choice<bool>({{"fixed", true}, {"free", false}}).show(false) == "free");
+  CHECK(value(list(), "a,,b") == std::vector<std::string>{"a", "b"});
+  CHECK(refused(list(one_of({"a", "b"})), "a,c") == "'c': expected a or b");
+  CHECK(list().show({"Q4", "Q17"}) == "Q4,Q17");
+  CHECK(*value(point_or("auto"), "1,-2.5") == Eigen::Vector2d(1, -2.5));
+  CHECK_FALSE(value(point_or("auto"), "auto"));
+  CHECK(refused(point_or("auto"), "1") == "expected auto or two numbers x,y");
+  CHECK(point_or("auto").show(std::nullopt) == "auto");
+  const Parser<int> odd = where<int>(integer(3, 99), [](const int& n) { return n % 2; }, "must be odd");
+  CHECK(refused(odd, "4") == "must be odd");
+  CHECK(refused(odd, "1") == "out of range [3, 99]");
+  CHECK(value(odd, "5") == 5);
+}
+
+namespace {
+
+struct Inner {
+  double nu = 0.4;
+};
+struct Sample {
+  int p = 2;
+  Inner inner;
+  bool fixed = true;
+};
+
+OptionTable<Sample> sample_table() {
+  OptionTable<Sample> t;
+  t.add("p", &Sample::p, integer(1, 10), "order");
+  t.add("nu", [](Sample& s) -> double& { return s.inner.nu; }, real(-1, 0.5, "()"), "ratio");
+  t.add("vertices", &Sample::fixed, choice<bool>({{"fixed", true}, {"free", false}}), "held");
+  t.check([](const Sample& s) { return s.p == 7 && s.fixed ? "p = 7 needs vertices=free" : ""; });
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("an option table reads given options over the struct's defaults", "[pipeline]") {
+  const OptionTable<Sample> t = sample_table();
+  const std::vector<OptionSpec> specs = t.specs();
+  REQUIRE(specs.size() == 3);
+  CHECK(specs[0].name == "p");
+  CHECK(specs[0].default_value == "2");
+  CHECK(specs[1].default_value == "0.4");
+  CHECK(specs[2].default_value == "fixed");
+  const Sample s = t.parse("curve", {{"p", "3.0"}, {"vertices", "free"}});
+  CHECK(s.p == 3);
+  CHECK(s.inner.nu == 0.4);
+  CHECK_FALSE(s.fixed);
+  CHECK_THROWS_WITH(t.parse("curve", {{"q", "1"}}),
+                    "stage 'curve': unknown option 'q' (options: p, nu, vertices)");
+  CHECK_THROWS_WITH(t.parse("curve", {{"p", "3.5"}}),
+                    "stage 'curve': option p=3.5: not an integer");
+  CHECK_THROWS_WITH(t.parse("curve", {{"p", "3,nu=0.3"}}),
+                    "stage 'curve': option p=3,nu=0.3: not an integer (options are separated "
+                    "by ':', as in curve:p=3:nu=0.3)");
+  CHECK_THROWS_WITH(t.parse("curve", {{"p", "7"}}), "stage 'curve': p = 7 needs vertices=free");
+  CHECK(t.parse("curve", {{"p", "7"}, {"vertices", "free"}}).p == 7);
 }
 
 TEST_CASE("the stage registry lists each stage once with documented options", "[pipeline]") {
@@ -63,4 +143,21 @@ TEST_CASE("the stage registry lists each stage once with documented options", "[
   for (const auto& n : names) listed += (listed.empty() ? "" : ", ") + n;
   REQUIRE_THROWS_WITH(stage("curv"), Catch::Contains("unknown stage 'curv'") &&
                                          Catch::Contains("(stages: " + listed + ")"));
+}
+
+TEST_CASE("every stage's defaults read back as themselves", "[pipeline]") {
+  // The shown defaults are what --help, Python and the README list: each must
+  // be a value its parser accepts; every stage but layers (walls) needs no option.
+  for (const Stage& s : stages()) {
+    CAPTURE(s.name);
+    const std::map<std::string, std::string> none =
+        s.name == "layers" ? std::map<std::string, std::string>{{"walls", "wall"}}
+                           : std::map<std::string, std::string>{};
+    REQUIRE_NOTHROW(s.parse(none));
+    std::map<std::string, std::string> given = none;
+    for (const OptionSpec& o : s.options)
+      if (!o.default_value.empty()) given[o.name] = o.default_value;
+    REQUIRE_NOTHROW(s.parse(given));
+  }
+  REQUIRE_THROWS_WITH(stage("layers").parse({}), Catch::Contains("stage 'layers': give the walls"));
 }

@@ -69,7 +69,7 @@ def test_quality_returns_its_numbers(session):
     r = homesh.quality(measures="Q4,Q11")
     res = r["results"]
     assert res["triangles"] == r["triangles"] and res["invalid"] == 0
-    assert 0.9 < res["worst_minJ_maxJ"] <= 1.0
+    assert 0.9 < res["worst"] <= 1.0
     assert 1 <= res["worst_triangle"] <= r["triangles"]
     assert 0 < res["Q11_min"] <= res["Q11_mean"] <= 1
     assert len(r["views"]) == 5
@@ -85,7 +85,7 @@ def test_every_result_carries_the_certified_validity(session):
     assert 0.5 < v["worst"] <= 1 and 1 <= v["worst_triangle"] <= r["triangles"]
     # The same as the quality stage certifies, and as homesh.validity() reads from the model.
     q = homesh.quality(measures="Q4")
-    assert q["results"]["worst_minJ_maxJ"] == v["worst"]
+    assert q["results"]["worst"] == v["worst"]
     assert q["results"]["worst_triangle"] == v["worst_triangle"]
     assert homesh.validity() == q["validity"]
 
@@ -94,3 +94,85 @@ def test_validity_needs_a_mesh(session):
     gmsh.open(os.path.join(GEO, "plate_hole.geo"))
     with pytest.raises(homesh.Error, match="has no triangles"):
         homesh.validity()
+
+
+def test_results_are_typed_and_share_the_validity_keys(session):
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    gmsh.model.mesh.generate(2)
+    r = homesh.order(p=2)
+    assert {type(r[k]) for k in ("order", "nodes", "triangles")} == {int}
+    assert all(type(t) is int for t in r["views"])
+    q = homesh.quality(measures="Q4")
+    res, v = q["results"], homesh.validity()
+    # Counts are int (not 0.0), measurements float, under one set of names.
+    for key in ("triangles", "invalid", "worst_triangle"):
+        assert type(res[key]) is int and type(v[key]) is int and res[key] == v[key]
+    assert type(res["worst"]) is float and res["worst"] == v["worst"]
+    assert type(res["Q4_min"]) is float and type(res["Q4_mean"]) is float
+    assert set(v) - {"line"} <= set(res)
+    assert set(q["validity"]) == set(v)
+    assert repr(res["invalid"]) == "0"
+
+
+def test_rotate_results_are_typed(session):
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    gmsh.option.setNumber("Mesh.MeshSizeFactor", 2)
+    gmsh.model.mesh.generate(2)
+    res = homesh.rotate(step=5, max=10)["results"]
+    for key in ("steps", "solves", "invalid_at_failure"):
+        assert type(res[key]) is int
+    assert type(res["reached_max"]) is bool and res["reached_max"]
+    assert res["steps"] == 2 and res["theta_max"] == 10.0
+    for key in ("theta_max", "mean_iterations", "worst", "centre_x", "centre_y"):
+        assert type(res[key]) is float
+
+
+def test_integer_options_take_integral_numbers_only(session):
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    gmsh.model.mesh.generate(2)
+    assert homesh.order(p=3.0)["order"] == 3
+    assert homesh.order(p="2.0")["order"] == 2
+    with pytest.raises(homesh.Error, match=r"stage 'order': option p=3.5: not an integer"):
+        homesh.order(p=3.5)
+    with pytest.raises(homesh.Error, match=r"stage 'quality': option measures=Q4,Q99: 'Q99'"):
+        homesh.quality(measures=["Q4", "Q99"])
+
+
+def physical_curve_number(name):
+    return next(tag for dim, tag in gmsh.model.getPhysicalGroups(1)
+                if gmsh.model.getPhysicalName(dim, tag) == name)
+
+
+def test_walls_by_group_name_group_number_or_curve_tag(session):
+    results = []
+    for walls in ("hole", None, "curves"):
+        gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+        gmsh.model.mesh.generate(2)
+        number = physical_curve_number("hole")
+        curves = gmsh.model.getEntitiesForPhysicalGroup(1, number)
+        given = {"hole": "hole", None: number,
+                 "curves": ",".join(str(c) for c in curves)}[walls]
+        r = homesh.layers(walls=given, n=2, first=1e-2)
+        results.append((r["triangles"], r["nodes"]))
+    assert results[0] == results[1] == results[2]
+    for wall in ("hole", physical_curve_number("hole")):
+        gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+        gmsh.option.setNumber("Mesh.MeshSizeFactor", 2)
+        gmsh.model.mesh.generate(2)
+        res = homesh.rotate(wall=wall, step=5, max=5)["results"]
+        assert res["steps"] == 1
+    with pytest.raises(homesh.Error, match="no wall '99': not a curve physical group"):
+        homesh.layers(walls=99)
+
+
+def test_stages_list_every_option_with_its_default(session):
+    stages = {s["name"]: s["options"] for s in homesh.stages()}
+    assert stages["curve"]["nu"][0] == "0.49"
+    assert stages["curve"]["formulation"][0] == "area"
+    assert stages["curve"]["increments"][0] == "1"
+    assert stages["curve"]["reach"][0] == "2"
+    assert stages["voronoi"]["front"][0] == "all"
+    assert stages["voronoi"]["lloyd"][0] == "10"
+    assert stages["layers"]["walls"][0] == ""
+    assert "physical group number" in stages["layers"]["walls"][1]
+    assert "physical group number" in stages["rotate"]["wall"][1]

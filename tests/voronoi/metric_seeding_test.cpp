@@ -152,8 +152,10 @@ TEST_CASE("front seeds: the apex is unit in an anisotropic metric and in a grade
     // Sizes 0.1 along x, 0.02 along y: 10 unit segments along x, 50 along y.
     const SquareBoundary b(10, 50);
     const Eigen::Matrix2d M = metric_from_axes(0.0, 0.1, 0.02);
+    SeedingOptions o;
+    o.front_rows = 1;
     const FrontSeeds f =
-        metric_front_seeds(b.grid, b.domain, MetricField::constant(M), b.seeds, b.segments);
+        metric_front_seeds(b.grid, b.domain, MetricField::constant(M), b.seeds, b.segments, o);
     int bottom = 0;
     for (int k = 0; k < f.seeds.cols(); ++k) {
       const Eigen::Vector2d q = f.seeds.col(k);

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace {
@@ -72,7 +73,10 @@ int main(int argc, char** argv) {
     const homesh::api::Result q = homesh::api::quality({{"measures", "Q4"}});
     std::cout << "quality views:";
     for (int tag : q.views) std::cout << " " << tag;
-    std::cout << "; Q4 min " << q.results.at("Q4_min") << "\n" << q.validity.line << "\n";
+    // Results are std::variant<bool, int, double>: counts int, measurements double.
+    std::cout << "; Q4 min " << std::get<double>(q.results.at("Q4_min")) << ", "
+              << std::get<int>(q.results.at("invalid")) << " invalid\n"
+              << q.validity.line << "\n";
     homesh::api::write(out, "plate_curve (homesh C++ API example)");
     std::cout << "wrote " << out << "\n";
     status = q.validity.invalid == 0 ? 0 : 1;

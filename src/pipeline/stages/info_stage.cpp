@@ -7,7 +7,7 @@ namespace {
 
 const char* dim_name(int dim) { return dim == 0 ? "point" : dim == 1 ? "curve" : "surface"; }
 
-void run(Context& ctx, const Options&) {
+void run(Context& ctx, const NoOptions&) {
   const Mesh& m = ctx.require_mesh("info");
   ctx.log.report("info: {} (CAD: {})", ctx.input, ctx.has_cad ? "yes" : "no");
   ctx.log.report("  order {}: {} nodes, {} triangles, {} boundary lines, {} points", m.order,
@@ -31,7 +31,8 @@ void run(Context& ctx, const Options&) {
 }  // namespace
 
 Stage info_stage() {
-  return {"info", "print counts, order, entities and physical groups of the mesh", {}, run};
+  return make_stage<NoOptions>(
+      "info", "print counts, order, entities and physical groups of the mesh", {}, run);
 }
 
 }  // namespace homesh

@@ -5,32 +5,15 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.h"
 #include "pipeline/analogy_options.h"
-#include "fem/linear_solver.h"
 #include "layers/insert_layers.h"
 #include "layers/radius_ratio.h"
 
 namespace homesh {
 namespace {
 
-void run(Context& ctx, const Options& opt) {
+void run(Context& ctx, const LayerOptions& o) {
   Mesh& m = ctx.require_mesh("layers");
-  LayerOptions o;
-  o.walls = opt.get_list("walls");
-  if (o.walls.empty())
-    throw Error("stage 'layers': give the walls, e.g. walls=aerofoil (curve physical groups or tags)");
-  o.layers = opt.get_int("n", 1, 1000);
-  o.first = opt.get_double("first");
-  o.ratio = opt.get_double("ratio");
-  o.normals.multi = opt.get_choice("normals", {"single", "multi"}) == "multi";
-  o.normals.fan = opt.get_int("fan", 3, 99);
-  o.normals.fan_angle = opt.get_double("fan_angle");
-  const AnalogyChoice analogy = read_analogy_options(opt, "layers");
-  o.room.formulation = analogy.formulation;
-  o.room.params = analogy.params;
-  o.room.solver = analogy.solver;
-
   const int order = m.order, nodes = m.num_nodes(), triangles = m.num_triangles();
   LayerResult r = insert_layers(m, o);
   if (r.from_corners)
@@ -89,19 +72,37 @@ void run(Context& ctx, const Options& opt) {
 }  // namespace
 
 Stage layers_stage() {
-  std::vector<OptionSpec> options = {
-      {"walls", "", "curve physical groups or tags the layers grow from, comma-separated: closed "
-                "loops, or open chains whose layers end along the boundary at their ends"},
-      {"n", "3", "number of layers"},
-      {"first", "1e-3", "thickness of the layer at the wall"},
-      {"ratio", "1.2", "thickness ratio of consecutive layers"},
-      {"normals", "single", "single | multi (fans of normals at sharp wall nodes)"},
-      {"fan", "5", "normals per fan (odd, >= 3)"},
-      {"fan_angle", "330", "domain angle (deg) from which a wall node gets a fan"}};
-  for (auto& o : analogy_option_specs()) options.push_back(std::move(o));
-  return {"layers",
-          "boundary layers on walls: room opened by the elastic analogy, geometric layers",
-          options, run};
+  // Defaults: those of LayerOptions (layers/insert_layers.h) and its parts.
+  OptionTable<LayerOptions> t;
+  t.add("walls", &LayerOptions::walls, list(),
+        "the curves the layers grow from, comma-separated, each a curve physical group name, a "
+        "curve physical group number or, if no group has that number, a curve tag: closed "
+        "loops, or open chains whose layers end along the boundary at their ends");
+  t.add("n", &LayerOptions::layers, integer(1, 1000), "number of layers");
+  t.add("first", &LayerOptions::first, real(0, INFINITY, "(]"),
+        "thickness of the layer at the wall");
+  t.add("ratio", &LayerOptions::ratio, real(0, INFINITY, "(]"),
+        "thickness ratio of consecutive layers");
+  t.add("normals", [](LayerOptions& o) -> bool& { return o.normals.multi; },
+        choice<bool>({{"single", false}, {"multi", true}}),
+        "single | multi (fans of normals at sharp wall nodes)");
+  t.add("fan", [](LayerOptions& o) -> int& { return o.normals.fan; },
+        where<int>(integer(3, 99), [](const int& n) { return n % 2 == 1; }, "must be odd"),
+        "normals per fan (odd, >= 3)");
+  t.add("fan_angle", [](LayerOptions& o) -> double& { return o.normals.fan_angle; },
+        real(180, 360, "[)"), "domain angle (deg) from which a wall node gets a fan");
+  add_analogy_options(
+      t, [](LayerOptions& o) -> std::string& { return o.room.formulation; },
+      [](LayerOptions& o) -> FormulationParams& { return o.room.params; },
+      [](LayerOptions& o) -> LinearSolverOptions& { return o.room.solver; });
+  t.check([](const LayerOptions& o) {
+    return o.walls.empty() ? "give the walls, e.g. walls=aerofoil (curve physical group names "
+                             "or numbers, or curve tags)"
+                           : "";
+  });
+  return make_stage<LayerOptions>(
+      "layers", "boundary layers on walls: room opened by the elastic analogy, geometric layers",
+      t, run);
 }
 
 }  // namespace homesh

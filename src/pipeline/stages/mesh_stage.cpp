@@ -2,9 +2,9 @@
 
 #include <gmsh.h>
 
-#include <map>
+#include <utility>
+#include <vector>
 
-#include "core/error.h"
 #include "gmsh/gmsh_call.h"
 #include "gmsh/read_model.h"
 
@@ -12,30 +12,16 @@ namespace homesh {
 namespace {
 
 // Gmsh's 2D algorithms that make triangles (Mesh.Algorithm numbers).
-const std::map<std::string, int>& algorithms() {
-  static const std::map<std::string, int> table = {
-      {"meshadapt", 1}, {"auto", 2}, {"delaunay", 5}, {"frontal", 6}, {"bamg", 7}};
-  return table;
-}
+const std::vector<std::pair<std::string, int>> kAlgorithms = {
+    {"meshadapt", 1}, {"auto", 2}, {"delaunay", 5}, {"frontal", 6}, {"bamg", 7}};
 
-void run(Context& ctx, const Options& opt) {
+void run(Context& ctx, const MeshOptions& o) {
   ctx.require_cad("mesh");
-  const std::string algorithm = opt.get_string("algorithm");
-  const auto it = algorithms().find(algorithm);
-  if (it == algorithms().end())
-    throw Error("stage 'mesh': option algorithm=" + algorithm +
-                ": unknown (meshadapt, auto, delaunay, frontal, bamg)");
-  const double size_min = opt.get_double("size_min");
-  const double size_max = opt.get_double("size_max");
-  const double factor = opt.get_double("factor");
-  if (size_min < 0 || size_max < 0 || factor <= 0 || (size_max > 0 && size_min > size_max))
-    throw Error("stage 'mesh': need 0 <= size_min <= size_max (0 = unset) and factor > 0");
-
   gmsh_adapter::gmsh_call("stage 'mesh' on " + ctx.input, [&] {
-    gmsh::option::setNumber("Mesh.Algorithm", it->second);
-    if (size_min > 0) gmsh::option::setNumber("Mesh.MeshSizeMin", size_min);
-    if (size_max > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", size_max);
-    gmsh::option::setNumber("Mesh.MeshSizeFactor", factor);
+    gmsh::option::setNumber("Mesh.Algorithm", o.algorithm);
+    if (o.size_min > 0) gmsh::option::setNumber("Mesh.MeshSizeMin", o.size_min);
+    if (o.size_max > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", o.size_max);
+    gmsh::option::setNumber("Mesh.MeshSizeFactor", o.factor);
     gmsh::option::setNumber("Mesh.ElementOrder", 1);
     gmsh::option::setNumber("Mesh.RecombineAll", 0);
     gmsh::model::mesh::clear();
@@ -50,13 +36,24 @@ void run(Context& ctx, const Options& opt) {
 }  // namespace
 
 Stage mesh_stage() {
-  return {"mesh",
-          "new linear triangle mesh of the input's CAD by Gmsh (replaces any mesh)",
-          {{"size_min", "0", "smallest element size (Mesh.MeshSizeMin; 0 = Gmsh's default)"},
-           {"size_max", "0", "largest element size (Mesh.MeshSizeMax; 0 = Gmsh's default)"},
-           {"factor", "1", "factor on all sizes (Mesh.MeshSizeFactor)"},
-           {"algorithm", "frontal", "meshadapt | auto | delaunay | frontal | bamg"}},
-          run, true};
+  std::vector<std::string> names;
+  for (const auto& [name, number] : kAlgorithms) names.push_back(name);
+  OptionTable<MeshOptions> t;
+  t.add("size_min", &MeshOptions::size_min, real(0),
+        "smallest element size (Mesh.MeshSizeMin; 0 = Gmsh's default)");
+  t.add("size_max", &MeshOptions::size_max, real(0),
+        "largest element size (Mesh.MeshSizeMax; 0 = Gmsh's default)");
+  t.add("factor", &MeshOptions::factor, real(0, INFINITY, "(]"),
+        "factor on all sizes (Mesh.MeshSizeFactor)");
+  t.add("algorithm", &MeshOptions::algorithm, choice(kAlgorithms), names_text(names));
+  t.check([](const MeshOptions& o) {
+    return o.size_max > 0 && o.size_min > o.size_max
+               ? "need size_min <= size_max (0 = unset)"
+               : "";
+  });
+  return make_stage<MeshOptions>(
+      "mesh", "new linear triangle mesh of the input's CAD by Gmsh (replaces any mesh)", t, run,
+      true);
 }
 
 }  // namespace homesh

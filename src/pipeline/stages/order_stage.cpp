@@ -5,21 +5,22 @@
 namespace homesh {
 namespace {
 
-void run(Context& ctx, const Options& opt) {
+void run(Context& ctx, const OrderOptions& o) {
   Mesh& m = ctx.require_mesh("order");
-  const int p = opt.get_int("p", 1, kMaxOrder);
-  m = raise_order(m, p);
+  m = raise_order(m, o.order);
   ctx.fields.clear();
-  ctx.log.info("order: p = {}, {} nodes, {} triangles", p, m.num_nodes(), m.num_triangles());
+  ctx.log.info("order: p = {}, {} nodes, {} triangles", o.order, m.num_nodes(),
+               m.num_triangles());
 }
 
 }  // namespace
 
 Stage order_stage() {
-  return {"order",
-          "raise (or lower) the mesh to order p with straight-sided elements",
-          {{"p", "2", "element order, 1 to " + std::to_string(kMaxOrder)}},
-          run};
+  OptionTable<OrderOptions> t;
+  t.add("p", &OrderOptions::order, integer(1, kMaxOrder),
+        "element order, 1 to " + std::to_string(kMaxOrder));
+  return make_stage<OrderOptions>(
+      "order", "raise (or lower) the mesh to order p with straight-sided elements", t, run);
 }
 
 }  // namespace homesh

@@ -1,111 +1,55 @@
 #include "pipeline/stages/rotate_stage.h"
 
-#include "pipeline/analogy_options.h"
-
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <cmath>
 
 #include "core/error.h"
+#include "core/wall_curves.h"
 #include "curving/deform_mesh.h"
-#include "curving/rotate_boundary.h"
-#include "fem/preconditioner.h"
+#include "pipeline/analogy_options.h"
 
 namespace homesh {
 namespace {
 
-// wall[i] = node i lies on a line of the physical curve groups called `names`.
+// wall[i] = node i lies on a line of the curves `names` gives.
 std::vector<bool> wall_nodes(const Mesh& m, const std::vector<std::string>& names) {
-  if (names.empty()) throw Error("stage 'rotate': option wall is empty");
-  std::vector<int> curves;
-  std::string known;
-  for (const std::string& name : names) {
-    bool found = false;
-    for (const PhysicalGroup& g : m.physicals) {
-      if (g.dim != 1) continue;
-      if (g.name == name) {
-        curves.insert(curves.end(), g.entities.begin(), g.entities.end());
-        found = true;
-      }
-    }
-    if (found) continue;
-    for (const PhysicalGroup& g : m.physicals)
-      if (g.dim == 1) known += (known.empty() ? "" : ", ") + g.name;
-    throw Error("stage 'rotate': no physical curve named '" + name + "' (physical curves: " +
-                (known.empty() ? "none" : known) + ")");
-  }
+  const std::vector<int> curves = wall_curves(m, names, "stage 'rotate'");
   std::vector<bool> wall(static_cast<std::size_t>(m.num_nodes()), false);
   for (int k = 0; k < m.num_lines(); ++k)
-    if (std::find(curves.begin(), curves.end(), m.line_entity[k]) != curves.end())
+    if (std::binary_search(curves.begin(), curves.end(), m.line_entity[k]))
       for (Eigen::Index j = 0; j < m.line.rows(); ++j) wall[m.line(j, k)] = true;
   if (std::find(wall.begin(), wall.end(), true) == wall.end())
     throw Error("stage 'rotate': the wall '" + names.front() + "' has no mesh lines");
   return wall;
 }
 
-Eigen::Vector2d centre(const Mesh& m, const std::vector<bool>& wall, const Options& opt) {
-  const std::vector<std::string> c = opt.get_list("centre");
-  if (c.size() == 1 && c[0] == "auto") {
-    Eigen::Matrix2Xd points(2, std::count(wall.begin(), wall.end(), true));
-    for (int i = 0, k = 0; i < m.num_nodes(); ++i)
-      if (wall[i]) points.col(k++) = m.x.col(i);
-    return fitted_circle_centre(points);
-  }
-  if (c.size() != 2) throw Error("stage 'rotate': option centre must be auto or x,y");
-  Eigen::Vector2d x;
-  for (int k = 0; k < 2; ++k) {
-    std::size_t used = 0;
-    try {
-      x(k) = std::stod(c[k], &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != c[k].size() || !std::isfinite(x(k)))
-      throw Error("stage 'rotate': option centre=" + opt.get_string("centre") +
-                  ": not two numbers x,y");
-  }
-  return x;
-}
-
-void run(Context& ctx, const Options& opt) {
+void run(Context& ctx, const RotateStageOptions& o) {
   Mesh& m = ctx.require_mesh("rotate");
-  const std::vector<bool> wall = wall_nodes(m, opt.get_list("wall"));
-  RotateOptions r;
-  r.centre = centre(m, wall, opt);
-  r.step = opt.get_double("step");
-  if (r.step == 0) throw Error("stage 'rotate': option step must be nonzero");
-  r.max_angle = opt.get_double("max");
-  if (!(r.max_angle >= 0)) throw Error("stage 'rotate': option max must be >= 0");
-  r.substeps = opt.get_int("substeps", 1, 1000);
-  const std::string pose = opt.get_choice("pose", {"current", "initial"});
-  r.total = pose == "initial";
-  const AnalogyChoice analogy = read_analogy_options(opt, "rotate");
-  r.formulation = analogy.formulation;
-  r.params = analogy.params;
-  r.solver = analogy.solver;
-
-  const RotateResult res = rotate_boundary(m, wall, boundary_nodes(m), r);
+  const RotateOptions& r = o.rotation;
+  const RotateResult res = rotate_boundary(m, wall_nodes(m, o.wall), boundary_nodes(m), r);
   m = res.mesh;
   ctx.fields.clear();
   ctx.results = {{"theta_max", res.theta_max},
                  {"steps", res.steps},
-                 {"reached_max", res.reached_max ? 1.0 : 0.0},
+                 {"reached_max", res.reached_max},
                  {"solves", res.solves},
                  {"mean_iterations", res.mean_iterations},
-                 {"worst_ratio", res.worst_ratio},
+                 {"worst", res.worst_ratio},
                  {"invalid_at_failure", res.invalid_at_failure},
-                 {"centre_x", r.centre.x()},
-                 {"centre_y", r.centre.y()}};
+                 {"centre_x", res.centre.x()},
+                 {"centre_y", res.centre.y()}};
   if (r.solver.method == "cg")
     ctx.log.info("rotate: theta_max = {:g} deg, mean CG iterations {:.0f}", res.theta_max,
                  res.mean_iterations);
   else
     ctx.log.info("rotate: theta_max = {:g} deg", res.theta_max);
+  std::string wall;
+  for (const std::string& w : o.wall) wall += (wall.empty() ? "" : ",") + w;
   ctx.log.info(
       "  wall {} about ({:.6g}, {:.6g}), step {:g} deg posed on the {} mesh ({} solves each), "
       "formulation {}, nu {:g}, heat {:g}, solver {}",
-      opt.get_string("wall"), r.centre.x(), r.centre.y(), r.step, pose,
+      wall, res.centre.x(), res.centre.y(), r.step, r.total ? "initial" : "current",
       r.total ? 1 : r.substeps, r.formulation, r.params.poisson, r.params.heat, r.solver.method);
   ctx.log.info("  {} steps, {} solves, worst minJ/maxJ {:.4f}, {}", res.steps, res.solves,
                res.worst_ratio,
@@ -117,17 +61,32 @@ void run(Context& ctx, const Options& opt) {
 }  // namespace
 
 Stage rotate_stage() {
-  std::vector<OptionSpec> options = {
-      {"wall", "hole", "physical curve group(s) to rotate, comma-separated"},
-      {"centre", "auto", "x,y, or auto: centre of the circle fitted to the wall's nodes"},
-      {"step", "1", "angle step, degrees (negative: clockwise)"},
-      {"max", "360", "largest angle tried, degrees"},
-      {"substeps", "1", "solves per step (pose=current)"},
-      {"pose", "current", "pose each step on the current mesh (thesis) or the initial one"}};
-  for (auto& o : analogy_option_specs()) options.push_back(std::move(o));
-  return {"rotate",
-          "turn a wall step by step (elastic analogy) until an element would become invalid",
-          options, run};
+  // Defaults: those of RotateStageOptions and RotateOptions (curving/rotate_boundary.h).
+  using O = RotateStageOptions;
+  OptionTable<O> t;
+  t.add("wall", &O::wall, list(),
+        "the curves to rotate, comma-separated, each a curve physical group name, a curve "
+        "physical group number or, if no group has that number, a curve tag");
+  t.add("centre", [](O& o) -> std::optional<Eigen::Vector2d>& { return o.rotation.centre; },
+        point_or("auto"), "x,y, or auto: centre of the circle fitted to the wall's nodes");
+  t.add("step", [](O& o) -> double& { return o.rotation.step; },
+        where<double>(real(), [](const double& h) { return h != 0; }, "must be nonzero"),
+        "angle step, degrees (negative: clockwise)");
+  t.add("max", [](O& o) -> double& { return o.rotation.max_angle; }, real(0),
+        "largest angle tried, degrees");
+  t.add("substeps", [](O& o) -> int& { return o.rotation.substeps; }, integer(1, 1000),
+        "solves per step (pose=current)");
+  t.add("pose", [](O& o) -> bool& { return o.rotation.total; },
+        choice<bool>({{"current", false}, {"initial", true}}),
+        "pose each step on the current mesh (thesis) or the initial one");
+  add_analogy_options(
+      t, [](O& o) -> std::string& { return o.rotation.formulation; },
+      [](O& o) -> FormulationParams& { return o.rotation.params; },
+      [](O& o) -> LinearSolverOptions& { return o.rotation.solver; });
+  t.check([](const O& o) { return o.wall.empty() ? "option wall is empty" : ""; });
+  return make_stage<O>(
+      "rotate", "turn a wall step by step (elastic analogy) until an element would become invalid",
+      t, run);
 }
 
 }  // namespace homesh

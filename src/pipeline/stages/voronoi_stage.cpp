@@ -41,7 +41,6 @@ constexpr int kGridMin = 200, kGridMax = 1500;
 constexpr int kCoarseMax = 400;      // coarse metric grid nodes along the longer side, at most
 constexpr double kBandCells = 8.0;   // the domain's distance is exact this many cells out
 constexpr int kLloydCoarsening = 2;  // Lloyd's iteration on a grid this many times coarser
-constexpr int kAllRows = 1000;       // front=all: rows until the fronts meet
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -170,35 +169,20 @@ Eigen::Matrix2Xd file_seeds(const std::string& path, const SeedList& list, const
   return m;
 }
 
-void run(Context& ctx, const Options& opt) {
+void run(Context& ctx, const VoronoiStageOptions& o) {
   ctx.require_cad("voronoi");
-  const std::string metric_name = opt.get_string("metric");
-  const std::string seeds_name = opt.get_string("seeds");
-  const std::string engine = opt.get_string("engine");
-  const int grid_option = opt.get_int("grid", 0, 20000);
-  const int lloyd = opt.get_int("lloyd", 0, 100);
-  const int smooth = opt.get_int("smooth", 0, 100);
-  int front_rows = kAllRows;
-  if (opt.get_string("front") != "all") {
-    try {
-      front_rows = opt.get_int("front", 0, kAllRows);
-    } catch (const Error& e) {
-      throw Error(std::string(e.what()) + " (front is 'all' or a number of rows)");
-    }
-  }
-  if (grid_option > 0 && grid_option < 32)
-    throw Error("stage 'voronoi': option grid must be 0 (automatic) or at least 32");
-  try {
-    voronoi_engine(engine);
-  } catch (const Error& e) {
-    throw Error(std::string("stage 'voronoi': option engine: ") + e.what());
-  }
+  const std::string& metric_name = o.metric;
+  const std::string& seeds_name = o.seeds;
+  const std::string& engine = o.engine;
+  const int grid_option = o.grid;
+  const int lloyd = o.lloyd.iterations;
+  const int smooth = o.smooth;
   const auto start = Clock::now();
 
   // Gmsh's default mesh: the sizes of the iso metric, and the model's
   // entities and physical groups.
   const Stage& mesher = stage("mesh");
-  mesher.run(ctx, Options(mesher.name, mesher.options, {}));
+  mesher.run(ctx, mesher.parse({}));
   const Mesh reference = *ctx.mesh;
 
   SeededBoundary boundary;
@@ -241,6 +225,7 @@ void run(Context& ctx, const Options& opt) {
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> triangle_surface;
   const double h_min = metric.min_speed();
+  int dual_triangles = 0, filled_triangles = 0, refined_seeds = 0;
   for (const gmsh_adapter::SurfaceBoundary& surface : boundary.surfaces) {
     const SurfaceLoops loops = surface_loops(boundary, surface);
     const double extent = (loops.hi - loops.lo).maxCoeff();
@@ -271,8 +256,7 @@ void run(Context& ctx, const Options& opt) {
     // Automatic seeds: the front rows advancing from the boundary segments,
     // then Poisson-disc seeds spaced from both where the fronts meet.
     const bool auto_seeds = seeds_name == "auto";
-    SeedingOptions so;
-    so.front_rows = front_rows;
+    const SeedingOptions& so = o.seeding;
     const FrontSeeds front =
         auto_seeds ? metric_front_seeds(p.grid, p.domain, metric, bseeds, segments, so)
                    : FrontSeeds{};
@@ -297,9 +281,7 @@ void run(Context& ctx, const Options& opt) {
       coarse.grid = grid_over(loops.lo, loops.hi, std::max(kGridMin, n / kLloydCoarsening), 3);
       coarse.domain =
           loop_signed_distance(coarse.grid, loops.polygons, kBandCells * coarse.grid.ds());
-      LloydOptions o;
-      o.iterations = lloyd;
-      p.seeds = lloyd_relaxation(coarse, static_cast<int>(hold), engine, o);
+      p.seeds = lloyd_relaxation(coarse, static_cast<int>(hold), engine, o.lloyd);
     }
     // Automatic seeds inside a boundary segment's diametral circle go: that
     // segment could be in no dual.
@@ -368,9 +350,9 @@ void run(Context& ctx, const Options& opt) {
           surface.tag, c.boundary_missed, segments.size(), c.dual_dropped, c.filled);
     ctx.log.info("voronoi: surface {}: {} triangles, {} from the dual, {} from the fill",
                  surface.tag, c.triangles.size(), c.from_dual, c.filled);
-    ctx.results["dual_triangles"] += c.from_dual;
-    ctx.results["filled_triangles"] += c.filled;
-    ctx.results["refined_seeds"] += added;
+    dual_triangles += c.from_dual;
+    filled_triangles += c.filled;
+    refined_seeds += added;
 
     // Interior and added seeds become nodes of the surface.
     std::vector<int> to_node(local_to_node);
@@ -384,6 +366,9 @@ void run(Context& ctx, const Options& opt) {
       triangle_surface.push_back(surface.tag);
     }
   }
+  ctx.results["dual_triangles"] = dual_triangles;
+  ctx.results["filled_triangles"] = filled_triangles;
+  ctx.results["refined_seeds"] = refined_seeds;
   for (Eigen::Index k = 0; k < list.points.cols(); ++k)
     if (!list_used[k])
       throw Error(seeds_name + ":" + std::to_string(list.lines[k]) + ": seed (" +
@@ -443,38 +428,45 @@ void run(Context& ctx, const Options& opt) {
 }  // namespace
 
 Stage voronoi_stage() {
-  return {"voronoi",
-          "new linear triangle mesh of the input's CAD, dual to the crystal Voronoi diagram "
-          "(thesis Ch 2; replaces any mesh)",
-          {{"metric", "iso",
-            "iso (the sizes of the mesh stage's default mesh) | bl (iso, 5 times finer across "
-            "the walls: curves not in a group 'farfield') | viewN (the tensor view of tag N, "
-            "e.g. merged by the .geo) | FILE.pos or FILE.msh (its last view, a tensor field) "
-            "| FILE (a coarse grid of 2x2 SPD tensors, format in src/voronoi/voronoi_files.h)"},
-           {"seeds", "auto",
-            "auto (front rows, then Poisson-disc in the metric) | FILE (interior seeds, one 'x y' "
-            "per line; the "
-            "boundary seeds are placed from the metric)"},
-           {"front", "all",
-            "with auto seeds: rows of seeds advancing from the boundary, each at the apexes of "
-            "the unit triangles (in the metric) on the row before (Rebay's frontal placement), "
-            "and a seed splitting each corner of 75-140 degrees; Poisson-disc seeds fill where "
-            "the fronts meet, Lloyd's iteration holds the first row | N: N rows | 0: none, "
-            "Poisson-disc seeds only"},
-           {"lloyd", "10",
-            "Lloyd iterations on the auto seeds: each interior seed but the first front row "
-            "moves to the metric centroid of its region (0: none)"},
-           {"smooth", "3",
-            "sweeps of smart smoothing of the interior nodes after the dual (Laplacian or "
-            "ideal-apex position, then compass searches: on the worst triangle where it stays "
-            "below 0.8, on the sum of inverse mean ratios; a move is kept only if the worst "
-            "triangle round the node gets no worse in the metric; the connectivity stays the "
-            "dual's; 0: none)"},
-           {"engine", "fast_marching", "fast_marching | level_set"},
-           {"grid", "0",
-            "grid nodes along the longer side (0: the smallest size over 6 cells, 200 to 1500)"}},
-          run,
-          true};
+  // Defaults: those of VoronoiStageOptions, SeedingOptions (voronoi/metric_seeding.h)
+  // and LloydOptions (voronoi/lloyd_relaxation.h).
+  using O = VoronoiStageOptions;
+  std::vector<std::string> engines;
+  for (const VoronoiEngine& e : voronoi_engines()) engines.push_back(e.name);
+  OptionTable<O> t;
+  t.add("metric", &O::metric, text(),
+        "iso (the sizes of the mesh stage's default mesh) | bl (iso, 5 times finer across "
+        "the walls: curves not in a group 'farfield') | viewN (the tensor view of tag N, "
+        "e.g. merged by the .geo) | FILE.pos or FILE.msh (its last view, a tensor field) "
+        "| FILE (a coarse grid of 2x2 SPD tensors, format in src/voronoi/voronoi_files.h)");
+  t.add("seeds", &O::seeds, text(),
+        "auto (front rows, then Poisson-disc in the metric) | FILE (interior seeds, one 'x y' "
+        "per line; the boundary seeds are placed from the metric)");
+  t.add("front", [](O& o) -> int& { return o.seeding.front_rows; },
+        integer(0, 1000, {{"all", kAllFrontRows}}),
+        "with auto seeds: rows of seeds advancing from the boundary, each at the apexes of "
+        "the unit triangles (in the metric) on the row before (Rebay's frontal placement), "
+        "and a seed splitting each corner of 75-140 degrees; Poisson-disc seeds fill where "
+        "the fronts meet, Lloyd's iteration holds the first row | N: N rows | 0: none, "
+        "Poisson-disc seeds only");
+  t.add("lloyd", [](O& o) -> int& { return o.lloyd.iterations; }, integer(0, 100),
+        "Lloyd iterations on the auto seeds: each interior seed but the first front row "
+        "moves to the metric centroid of its region (0: none)");
+  t.add("smooth", &O::smooth, integer(0, 100),
+        "sweeps of smart smoothing of the interior nodes after the dual (Laplacian or "
+        "ideal-apex position, then compass searches: on the worst triangle where it stays "
+        "below 0.8, on the sum of inverse mean ratios; a move is kept only if the worst "
+        "triangle round the node gets no worse in the metric; the connectivity stays the "
+        "dual's; 0: none)");
+  t.add("engine", &O::engine, one_of(engines), names_text(engines));
+  t.add("grid", &O::grid,
+        where<int>(integer(0, 20000), [](const int& n) { return n == 0 || n >= 32; },
+                   "must be 0 (automatic) or at least 32"),
+        "grid nodes along the longer side (0: the smallest size over 6 cells, 200 to 1500)");
+  return make_stage<O>("voronoi",
+                       "new linear triangle mesh of the input's CAD, dual to the crystal Voronoi "
+                       "diagram (thesis Ch 2; replaces any mesh)",
+                       t, run, true);
 }
 
 }  // namespace homesh
