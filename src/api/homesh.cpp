@@ -34,9 +34,15 @@ void configure_log(Log& log) {
     };
 }
 
-Validity summary(const Mesh& m) {
+// The mesh's validity, its worst triangle named by the Gmsh tag homesh
+// writes it with (Mesh::triangle_tag), or by `tags` when read from a model.
+Validity summary(const Mesh& m, const std::vector<std::size_t>& tags = {}) {
   const MeshValidity v = mesh_validity(m);
-  return {m.num_triangles(), v.invalid, v.worst, v.worst_element + 1, validity_line(m, v)};
+  const std::size_t worst = v.worst_element < 0 ? 0
+                            : tags.empty()      ? m.triangle_tag(v.worst_element)
+                                                : tags[static_cast<std::size_t>(v.worst_element)];
+  return {m.num_triangles(), v.invalid, v.worst, static_cast<int>(worst),
+          validity_line(m, v, worst)};
 }
 
 // Runs `body`, Gmsh's own std::string throws turned into homesh::Error as the
@@ -108,7 +114,9 @@ Validity validity() {
   return guarded([] {
     const std::string source = "the current Gmsh model";
     if (!gmsh_adapter::model_has_mesh()) throw Error(source + ": has no triangles (no 2D mesh)");
-    return summary(gmsh_adapter::read_model(source));
+    std::vector<std::size_t> tags;
+    const Mesh m = gmsh_adapter::read_model(source, &tags);
+    return summary(m, tags);
   });
 }
 
@@ -118,7 +126,9 @@ void write(const std::string& path, const std::string& provenance, bool keep_inv
     // Every output carries its certified validity; an invalid mesh is never written silently.
     const std::string source = "the current Gmsh model";
     if (!gmsh_adapter::model_has_mesh()) throw Error(source + ": has no triangles (no 2D mesh)");
-    const Validity v = summary(gmsh_adapter::read_model(source));
+    std::vector<std::size_t> tags;
+    const Mesh m = gmsh_adapter::read_model(source, &tags);
+    const Validity v = summary(m, tags);
     if (v.invalid > 0 && !keep_invalid)
       throw Error(path + ": not written: " + std::to_string(v.invalid) +
                   " triangles are not certified valid (keep them with keep_invalid)");

@@ -40,7 +40,7 @@ struct Validity {
   int triangles = 0;
   int invalid = 0;          ///< triangles not certified valid
   double worst = 1;         ///< smallest certified minJ/maxJ, in [-1, 1]
-  int worst_triangle = 0;   ///< the triangle of `worst`, 1-based
+  int worst_triangle = 0;   ///< the Gmsh element tag of the triangle of `worst`
   std::string line;         ///< the CLI's one-line summary ("validity: ...")
 };
 

@@ -158,6 +158,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "homesh: error: %s\n", e.what());
   } catch (const std::string& e) {
     std::fprintf(stderr, "homesh: error: Gmsh: %s\n", e.c_str());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "homesh: error: out of memory (the input or an option asks for more "
+                         "than this machine has)\n");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "homesh: error: %s\n", e.what());
   }

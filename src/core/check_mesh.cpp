@@ -55,7 +55,6 @@ void check_mesh(const Mesh& m, const std::string& source) {
                   " from the origin; homesh accepts coordinates up to " +
                   fmt_number(limits::kMaxCoordinate));
   }
-  check_manifold(m, source);
   std::set<std::array<int, 3>> seen;
   for (int e = 0; e < m.num_triangles(); ++e) {
     std::array<int, 3> c = {m.tri(0, e), m.tri(1, e), m.tri(2, e)};
@@ -73,6 +72,7 @@ void check_mesh(const Mesh& m, const std::string& source) {
     if (!seen.insert(c).second)
       throw Error(source + ": " + where(m, e) + " duplicates another triangle");
   }
+  check_manifold(m, source);
 }
 
 }  // namespace homesh

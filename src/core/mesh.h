@@ -74,6 +74,14 @@ struct Mesh {
   Eigen::Matrix2Xd triangle_nodes(int e) const;
   /// Centroid of the three corners of triangle e (where reports place it).
   Eigen::Vector2d corner_centroid(int e) const;
+  /// The Gmsh element tag of triangle e once homesh writes the mesh into a
+  /// model or a file (gmsh/write_model.h): tags 1.. go to the point elements,
+  /// then the lines, then the triangles in order. Reports name elements by it,
+  /// so a user finds them in the GUI and through the API.
+  std::size_t triangle_tag(int e) const {
+    return 1 + point_node.size() + static_cast<std::size_t>(num_lines()) +
+           static_cast<std::size_t>(e);
+  }
 };
 
 /// Highest element order homesh supports (the basis stays accurate to ~1e-10).

@@ -3,6 +3,7 @@
 #include <gmsh.h>
 
 #include <exception>
+#include <new>
 
 #include "core/error.h"
 
@@ -18,6 +19,9 @@ void gmsh_call(const std::string& what, const std::function<void()>& body) {
   } catch (const std::string& e) {
     message = e;
   } catch (const Error&) {
+    gmsh::logger::stop();
+    throw;
+  } catch (const std::bad_alloc&) {  // out of memory is not Gmsh's error: the caller says what ran out
     gmsh::logger::stop();
     throw;
   } catch (const std::exception& e) {

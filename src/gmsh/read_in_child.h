@@ -11,13 +11,14 @@
 namespace homesh::gmsh_adapter {
 
 /// Runs `read` (reading `path` through Gmsh) in a forked child, its output
-/// discarded (memory capped at 1 GiB + 64 x the file's size, except under
-/// AddressSanitizer, which needs its own address space; time capped at 60 s +
-/// 1 s per MB). Throws homesh::Error naming `path` if the child dies by a
-/// signal, runs out of memory or time. An error thrown by `read` in the child
-/// passes: running `read` again in-process reports it. Call before any OpenMP
-/// region has run in this process (a forked child cannot use a parent's
-/// OpenMP threads).
+/// discarded, memory capped at 1 GiB + 64 x the file's size (except under
+/// AddressSanitizer, which needs its own address space) and time at 10 s +
+/// 2 s per MB (Gmsh reads MSH at well over 10 MB/s; a mutated file made it
+/// churn for minutes). Throws homesh::Error naming `path` if the child dies by
+/// a signal, runs out of memory or time, and with the child's message if
+/// `read` threw there (the file is then not read again in-process). Call before any
+/// OpenMP region has run in this process (a forked child cannot use a
+/// parent's OpenMP threads).
 void read_in_child(const std::string& path, const std::function<void()>& read);
 
 }  // namespace homesh::gmsh_adapter

@@ -66,7 +66,7 @@ bool model_has_cad() {
   return false;
 }
 
-Mesh read_model(const std::string& source) {
+Mesh read_model(const std::string& source, std::vector<std::size_t>* triangle_tags) {
   Mesh m;
   read_entities(m);
 
@@ -145,12 +145,16 @@ Mesh read_model(const std::string& source) {
     blocks.push_back({tag, nodes});
   };
   std::vector<ElementBlock> points, lines, tris;
+  if (triangle_tags) triangle_tags->clear();
   for (const Entity& e : m.entities) {
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> etags, enodes;
     gmsh::model::mesh::getElements(types, etags, enodes, e.dim, e.tag);
-    for (std::size_t t = 0; t < types.size(); ++t)
+    for (std::size_t t = 0; t < types.size(); ++t) {
       take(e.dim, e.tag, types[t], enodes[t], e.dim == 0 ? points : e.dim == 1 ? lines : tris);
+      if (e.dim == 2 && triangle_tags)
+        triangle_tags->insert(triangle_tags->end(), etags[t].begin(), etags[t].end());
+    }
   }
   if (tris.empty()) throw Error(source + ": has no triangles (no 2D mesh)");
   m.order = order;

@@ -1,6 +1,7 @@
 #pragma once
 // Gmsh model -> core mesh.
 #include <string>
+#include <vector>
 
 #include "core/mesh.h"
 
@@ -12,7 +13,8 @@ namespace homesh::gmsh_adapter {
 /// increasing Gmsh tag order. Throws homesh::Error naming `source` if the model
 /// holds no triangles, 3D elements, non-triangle 2D elements, elements of mixed
 /// orders, nodes off the plane z = 0, or triangles check_mesh rejects.
-Mesh read_model(const std::string& source);
+/// `triangle_tags`, if given, receives the Gmsh element tag of each triangle.
+Mesh read_model(const std::string& source, std::vector<std::size_t>* triangle_tags = nullptr);
 
 /// True if the current model has a 2D mesh (any element of dimension 2).
 bool model_has_mesh();

@@ -81,7 +81,7 @@ ModelTags write_model(const Mesh& m) {
     add_elements(15, conn, m.point_entity, 1);
   }
   tags.first_line = 1 + m.point_node.size();
-  tags.first_triangle = tags.first_line + static_cast<std::size_t>(m.num_lines());
+  tags.first_triangle = m.triangle_tag(0);
   if (m.num_lines() > 0)
     add_elements(gmsh::model::mesh::getElementType("Line", m.order), m.line, m.line_entity,
                  tags.first_line);

@@ -8,7 +8,7 @@
 
 namespace homesh {
 
-std::string validity_line(const Mesh& m, const MeshValidity& v) {
+std::string validity_line(const Mesh& m, const MeshValidity& v, std::size_t worst_tag) {
   std::string line = fmt::format(
       "validity: {} invalid of {} triangles (certified by Bezier bounds of det J, relative "
       "tolerance {:g})",
@@ -16,7 +16,7 @@ std::string validity_line(const Mesh& m, const MeshValidity& v) {
   if (v.worst_element >= 0) {
     const Eigen::Vector2d c = m.corner_centroid(v.worst_element);
     line += fmt::format("; worst minJ/maxJ {:.4f} at triangle {} ({:.4g}, {:.4g})", v.worst,
-                        v.worst_element + 1, c.x(), c.y());
+                        worst_tag ? worst_tag : m.triangle_tag(v.worst_element), c.x(), c.y());
   }
   if (v.unconverged > 0) line += fmt::format("; {} not refined to tolerance", v.unconverged);
   return line;
@@ -41,8 +41,8 @@ std::string worst_elements(const Mesh& m, const Eigen::VectorXd& values, int cou
   std::string out;
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector2d c = m.corner_centroid(order[k]);
-    out += fmt::format("    triangle {:<8} at ({:.4g}, {:.4g})  {:.4f}\n", order[k] + 1, c.x(),
-                       c.y(), values(order[k]));
+    out += fmt::format("    triangle {:<8} at ({:.4g}, {:.4g})  {:.4f}\n",
+                       m.triangle_tag(order[k]), c.x(), c.y(), values(order[k]));
   }
   return out;
 }

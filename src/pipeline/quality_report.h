@@ -9,14 +9,15 @@
 namespace homesh {
 
 /// One line: invalid count (certified) and the worst minJ/maxJ with its
-/// triangle (1-based) and centroid.
-std::string validity_line(const Mesh& m, const MeshValidity& v);
+/// triangle (its Gmsh element tag, Mesh::triangle_tag) and centroid.
+/// `worst_tag` (0: Mesh::triangle_tag of the worst) names it otherwise.
+std::string validity_line(const Mesh& m, const MeshValidity& v, std::size_t worst_tag = 0);
 
 /// "name  min .. mean .. | counts of 10 bins over [0, 1] |" for per-element values.
 std::string histogram_line(const std::string& name, const Eigen::VectorXd& values);
 
-/// The `count` elements with the smallest values: triangle number (1-based),
-/// centroid and value, one per line.
+/// The `count` elements with the smallest values: Gmsh element tag
+/// (Mesh::triangle_tag), centroid and value, one per line.
 std::string worst_elements(const Mesh& m, const Eigen::VectorXd& values, int count);
 
 }  // namespace homesh

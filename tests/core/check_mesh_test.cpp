@@ -47,6 +47,20 @@ TEST_CASE("check_mesh accepts a good mesh and names each defect", "[core]") {
   REQUIRE_THROWS_WITH(check_mesh(duplicate, "in.msh"),
                       Catch::Contains("triangle 2") && Catch::Contains("duplicates"));
 
+  Mesh fin = square();  // a third triangle on the diagonal 1-3
+  fin.tri.conservativeResize(3, 3);
+  fin.tri.col(2) << 2, 0, 4;
+  fin.tri_entity.push_back(1);
+  REQUIRE_THROWS_WITH(check_mesh(fin, "in.msh"),
+                      Catch::Contains("the edge between nodes 1 and 3") &&
+                          Catch::Contains("three or more triangles (a non-manifold mesh)"));
+
+  Mesh far = square();
+  far.x *= 1e13;
+  REQUIRE_THROWS_WITH(check_mesh(far, "in.msh"),
+                      "in.msh: node 2 lies 1e+13 from the origin; homesh accepts coordinates up "
+                      "to 1e+12");
+
   Mesh nan = square();
   nan.x(1, 3) = std::numeric_limits<double>::quiet_NaN();
   REQUIRE_THROWS_WITH(check_mesh(nan, "in.msh"), "in.msh: node 4 has a non-finite coordinate");

@@ -27,7 +27,13 @@ def plate():
     gmsh.finalize()
 
 
-def test_messages_reach_redirected_stdout(plate):
+@pytest.fixture
+def no_logging(monkeypatch):
+    """Python's logging as in a plain script: no handler above "homesh" (pytest adds one)."""
+    monkeypatch.setattr(logging.getLogger("homesh"), "propagate", False)
+
+
+def test_messages_reach_redirected_stdout(plate, no_logging):
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
         homesh.info()
@@ -43,7 +49,7 @@ def test_messages_reach_python_logging(plate, caplog):
     assert out.getvalue() == ""  # once, through logging
 
 
-def test_verbosity_below_4_silences_reports(plate):
+def test_verbosity_below_4_silences_reports(plate, no_logging):
     gmsh.option.setNumber("General.Verbosity", 3)
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
@@ -58,6 +64,7 @@ def test_verbosity_below_4_silences_reports(plate):
 @pytest.mark.parametrize("version,binary", [(2.2, 1), (2.2, 0), (4.1, 1)])
 def test_write_honours_and_restores_the_users_options(plate, tmp_path, version, binary):
     homesh.curve(p=2)
+    homesh.quality(measures="Q4")  # views to write
     gmsh.option.setNumber("Mesh.MshFileVersion", version)
     gmsh.option.setNumber("Mesh.Binary", binary)
     gmsh.option.setNumber("Mesh.SaveAll", 0)
@@ -86,10 +93,12 @@ def test_other_extensions_are_refused_with_the_clis_message(plate, tmp_path):
 
 def test_an_invalid_mesh_is_written_only_when_asked(plate, tmp_path):
     homesh.order(p=2)
-    # Move one high-order node far across its triangle: that triangle folds.
-    tags, coords, _ = gmsh.model.mesh.getNodes(2, -1, False, False)
-    assert len(tags) > 0
-    gmsh.model.mesh.setNode(tags[0], [coords[0] + 10, coords[1] + 10, 0], [])
+    # Move a mid-edge node of a triangle beyond its opposite corner: its
+    # corners stay counter-clockwise, but det J changes sign inside.
+    _, nodes = gmsh.model.mesh.getElementsByType(gmsh.model.mesh.getElementType("Triangle", 2))
+    corner = gmsh.model.mesh.getNode(nodes[2])[0]
+    middle = gmsh.model.mesh.getNode(nodes[3])[0]
+    gmsh.model.mesh.setNode(nodes[3], list(corner + 1.5 * (corner - middle)), [])
     out = tmp_path / "bad.msh"
     with pytest.raises(homesh.Error, match="not certified valid"):
         homesh.write(str(out))

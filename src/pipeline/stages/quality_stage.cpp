@@ -41,7 +41,7 @@ void run(Context& ctx, const QualityOptions& o) {
   ctx.results = {{"triangles", m.num_triangles()},
                  {"invalid", v.invalid},
                  {"worst", v.worst},
-                 {"worst_triangle", v.worst_element + 1}};
+                 {"worst_triangle", static_cast<int>(m.triangle_tag(v.worst_element))}};
   std::vector<std::string> histograms = {histogram_line("minJ/maxJ", v.ratio)};
   for (std::size_t j = 0; j < chosen.size(); ++j) {
     const std::string& name = chosen[j]->name;
