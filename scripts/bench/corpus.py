@@ -381,11 +381,15 @@ def case(name):
 
 
 def select(patterns=None):
-    """The cases whose names match any of the comma-separated shell patterns (all if none)."""
+    """The cases whose names match any of the comma-separated shell patterns (substrings
+    match too), in the order of the patterns (all cases, in corpus order, if none)."""
     if not patterns:
         return list(CASES)
     pats = [p if any(ch in p for ch in "*?[") else f"*{p}*" for p in patterns.split(",")]
-    return [c for c in CASES if any(fnmatch.fnmatch(c.name, p) for p in pats)]
+    chosen = []
+    for p in pats:
+        chosen += [c for c in CASES if fnmatch.fnmatch(c.name, p) and c not in chosen]
+    return chosen
 
 
 # ---------------------------------------------------------------- building
