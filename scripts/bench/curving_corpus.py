@@ -14,9 +14,8 @@ target) keeps the mesh it left, which is refereed as it is (its error goes to th
 
 Linear meshes: each case is built once per run by corpus.write (CAD + mesher) into
 OUT/meshes/NAME.msh; every method then starts from a fresh Gmsh session in a child process that
-recreates the CAD and merges that file (corpus.load) when Gmsh made the mesh, or rebuilds the
-case (corpus.build) when homesh's layers or voronoi made it (their nodes' saved parametric
-coordinates do not survive the merge); --rebuild: corpus.build in every child.
+recreates the CAD and merges that file (corpus.load: the same model as corpus.build, see
+corpus.write); --rebuild: corpus.build in every child.
 
 Referee: Gmsh's AnalyseMeshQuality per-element minJ/maxJ (scripts/bench/gmsh_referee.py):
 invalid = count <= 0, worst = the minimum. Seconds: wall time of the curving call(s) only
@@ -77,11 +76,7 @@ def child(conn, name, msh, p, method, rebuild):
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
     try:
-        # homesh's layers and voronoi stages make nodes whose saved parametric coordinates
-        # do not survive a merge (an L-shape's layers came back with every triangle invalid
-        # after setOrder): those cases are rebuilt; Gmsh's own meshes merge identically.
-        fresh = rebuild or corpus.case(name).mesher in ("layers", "voronoi")
-        rec = corpus.build(name) if fresh else corpus.load(name, msh)
+        rec = corpus.build(name) if rebuild else corpus.load(name, msh)
     except Exception as e:
         conn.send(("failed", first_line(e)))
         return
