@@ -39,7 +39,7 @@ Command line (Debian's /usr/bin/python3, PYTHONPATH=build/python for homesh):
 
     corpus.py [--list] [--cases PATTERN] [--out DIR]
 
-writes DIR/NAME.msh (the linear mesh, with parametric coordinates on the CAD) and DIR/NAME.brep
+writes DIR/NAME.msh (the linear mesh; see `write`) and DIR/NAME.brep
 (its CAD) per case, and DIR/corpus.csv (the records); default DIR out/bench/corpus/meshes.
 """
 import argparse
