@@ -1,0 +1,661 @@
+#!/usr/bin/python3
+"""The curving corpus of issue 16: linear 2D triangle meshes homesh did not design for.
+
+Every case is made by a script, deterministically, in the current Gmsh session: its CAD with
+`gmsh.model.occ` (so curving can put the high-order nodes on it), then a linear triangle mesh
+by one of four meshers:
+
+  gmsh_bl  : Gmsh's BoundaryLayer field on the wall curves (Size = first cell, Ratio, the
+             Thickness of n layers, Quads = 0, a fan of Mesh.BoundaryLayerFanElements at every
+             sharp wall point, e.g. a trailing edge, via FanPointsList), generate(2);
+  layers   : Gmsh's mesh, then homesh's `layers` stage (normals=multi with fans at sharp
+             points when there are any);
+  none     : Gmsh's mesh alone (no layers);
+  voronoi  : homesh's `voronoi` stage (crystal-growth Voronoi regions, sizes from the same
+             Gmsh size field).
+
+Shapes: NACA 4- and 5-digit aerofoils (thin, thick, cambered, at incidence; closed sharp
+trailing edges, each surface a cubic B-spline with the exact leading-edge tangent), a main
+element with a flap and with slat + flap (small gaps, small nose radii), circles and ellipses
+alone and in arrays, smooth random star-shaped bodies (fixed seeds), an L-shaped domain with a
+rounded re-entrant corner and a hole, a plate with holes. Wall sizes coarse and fine; first
+cells 1e-3 .. 1e-5 of the chord. Every case has the physical curve group "wall" (what is
+curved and what layers grow from), "farfield" where it has one, and the surface "fluid".
+
+The record of a case (`build` returns it): triangles, other 2D elements (must be 0), wall
+edges, the requested and the measured first-cell height (over the wall nodes, the shortest
+mesh edge to a node off the wall), and the largest turning angle of consecutive linear wall
+edges, both over all wall nodes (`turn_all_deg`) and over the nodes where the CAD wall is
+smooth (`turn_deg`: CAD corners such as a trailing edge, which curving keeps sharp, left out).
+The issue's target worst minJ/maxJ is 0.9 where `turn_deg` < 30 degrees, 0.8 elsewhere.
+
+Library use (the benchmark does this before each method, in a fresh Gmsh session):
+
+    import corpus
+    gmsh.initialize()
+    record = corpus.build(corpus.case("naca0012_bl_1e-4"))
+
+Command line (Debian's /usr/bin/python3, PYTHONPATH=build/python for homesh):
+
+    corpus.py [--list] [--cases PATTERN] [--out DIR]
+
+writes DIR/NAME.msh (the linear mesh; see `write`) and DIR/NAME.brep
+(its CAD) per case, and DIR/corpus.csv (the records); default DIR out/bench/corpus/meshes.
+"""
+import argparse
+import csv
+import fnmatch
+import math
+import os
+import sys
+from dataclasses import dataclass, field
+
+import gmsh
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+WALL = "wall"
+
+
+# ---------------------------------------------------------------- aerofoil sections
+
+def naca_section(code):
+    """(t, camber) of a NACA 4-digit (MPTT) or 5-digit (LPQTT, non-reflexed Q = 0) section:
+    t the thickness over chord, camber(x) -> (yc, dyc/dx) on x in [0, 1]."""
+    if len(code) == 4:
+        m, p, t = int(code[0]) / 100, int(code[1]) / 10, int(code[2:]) / 100
+
+        def camber(x):
+            if m == 0:
+                return np.zeros_like(x), np.zeros_like(x)
+            front = x < p
+            yc = np.where(front, m / p**2 * (2 * p * x - x**2),
+                          m / (1 - p)**2 * (1 - 2 * p + 2 * p * x - x**2))
+            dyc = np.where(front, 2 * m / p**2 * (p - x), 2 * m / (1 - p)**2 * (p - x))
+            return yc, dyc
+        return t, camber
+    if len(code) == 5 and code[2] == "0":
+        # Abbott & von Doenhoff's table of the 5-digit mean lines (design cl 0.3, L = 2):
+        # position digit P -> (r, k1); k1 scales linearly with the design lift L.
+        table = {1: (0.0580, 361.4), 2: (0.1260, 51.64), 3: (0.2025, 15.957),
+                 4: (0.2900, 6.643), 5: (0.3910, 3.230)}
+        r, k1 = table[int(code[1])]
+        k1 *= int(code[0]) / 2
+        t = int(code[3:]) / 100
+
+        def camber(x):
+            front = x < r
+            yc = np.where(front, k1 / 6 * (x**3 - 3 * r * x**2 + r**2 * (3 - r) * x),
+                          k1 * r**3 / 6 * (1 - x))
+            dyc = np.where(front, k1 / 6 * (3 * x**2 - 6 * r * x + r**2 * (3 - r)),
+                           -k1 * r**3 / 6 * np.ones_like(x))
+            return yc, dyc
+        return t, camber
+    raise ValueError(f"NACA {code}: 4 digits MPTT or 5 digits LP0TT expected")
+
+
+def surface_control_points(code, n, side):
+    """Control points of one surface's clamped cubic B-spline with knots 0..n (the
+    construction of scripts/examples/naca7526.py, for any mean line): it interpolates the
+    cosine-spaced samples (closed trailing edge) at the knots, has the exact leading-edge
+    derivative and a natural end at the trailing edge. side = +1 upper, -1 lower."""
+    t, camber = naca_section(code)
+    beta = np.arange(n + 1) * math.pi / n
+    x = (1 - np.cos(beta)) / 2
+    yt = 5 * t * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3
+                  - 0.1036 * x**4)
+    yc, dyc = camber(x)
+    theta = np.arctan(dyc)
+    q = np.column_stack([x - side * yt * np.sin(theta), yc + side * yt * np.cos(theta)])
+    theta0 = float(theta[0])
+    d_le = math.pi / n * 5 * t * 0.2969 / 2
+    P = np.zeros((n + 3, 2))
+    P[0] = q[0]
+    P[1] = q[0] + side * d_le / 3 * np.array([-math.sin(theta0), math.cos(theta0)])
+    A = np.zeros((n - 1, n - 1))
+    r = np.zeros((n - 1, 2))
+    for k in range(1, n):
+        i = k - 1
+        if k == 1:
+            A[i, i], r[i] = 7 / 12, q[1] - P[1] / 4
+        else:
+            A[i, i - 1], A[i, i], r[i] = 1 / 6, 2 / 3, q[k]
+        if k < n - 1:
+            A[i, i + 1] = 1 / 6
+        else:
+            r[i] = r[i] - q[n] / 6
+    P[2:n + 1] = np.linalg.solve(A, r)
+    P[n + 1] = (2 * q[n] + P[n]) / 3
+    P[n + 2] = q[n]
+    return P, q
+
+
+def placed(points, chord=1.0, pitch=0.0, at=(0.0, 0.0), pivot=(0.0, 0.0)):
+    """points of a unit-chord section scaled by chord, turned nose-up by pitch degrees about
+    the unit section's pivot, then moved so that the pivot lies at `at`."""
+    a = -math.radians(pitch)
+    R = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+    return (np.asarray(points) - pivot) @ R.T * chord + at
+
+
+def add_aerofoil(code, chord=1.0, pitch=0.0, at=(0.0, 0.0), pivot=(0.25, 0.0), n=60):
+    """An aerofoil surface (occ), two B-splines meeting at the leading edge and at the sharp
+    trailing edge; returns its surface tag."""
+    occ = gmsh.model.occ
+    ends, curves = None, []
+    for side in (1, -1):
+        P, _ = surface_control_points(code, n, side)
+        P = placed(P, chord, pitch, at, pivot)
+        if ends is None:
+            ends = [occ.addPoint(*P[0], 0), occ.addPoint(*P[-1], 0)]
+        inner = [occ.addPoint(x, y, 0) for x, y in P[1:-1]]
+        curves.append(occ.addBSpline([ends[0]] + inner + [ends[1]]))
+        occ.remove([(0, tag) for tag in inner])
+    return occ.addPlaneSurface([occ.addCurveLoop(curves)])
+
+
+def outline(code, chord=1.0, pitch=0.0, at=(0.0, 0.0), pivot=(0.25, 0.0), n=200):
+    """Sampled closed outline of a placed aerofoil (for gaps between elements)."""
+    up = surface_control_points(code, n, 1)[1]
+    lo = surface_control_points(code, n, -1)[1]
+    return placed(np.vstack([up, lo[::-1]]), chord, pitch, at, pivot)
+
+
+def gap(a, b):
+    return float(np.min(np.linalg.norm(a[:, None, :] - b[None, :, :], axis=2)))
+
+
+def solve_offset(fixed, make, target, lo, hi):
+    """The offset s in [lo, hi] at which gap(fixed, make(s)) = target, by bisection (the gap
+    grows with s)."""
+    for _ in range(60):
+        s = (lo + hi) / 2
+        lo, hi = (s, hi) if gap(fixed, make(s)) < target else (lo, s)
+    return (lo + hi) / 2
+
+
+# ---------------------------------------------------------------- shapes
+
+def box(x0, y0, x1, y1):
+    return gmsh.model.occ.addRectangle(x0, y0, 0, x1 - x0, y1 - y0)
+
+
+def shape_aerofoil(code, aoa=0.0):
+    return [add_aerofoil(code, pitch=aoa)], (-2, -2, 3, 2)
+
+
+def shape_multi(flap_gap=0.02, slat=False, aoa=4.0):
+    """Main NACA 2412 (chord 1) with a NACA 0009 flap (chord 0.3, deflected 25 degrees, its
+    nose under the main trailing edge at flap_gap), and with slat a NACA 0012 slat (chord
+    0.16, 30 degrees nose down) ahead of the main leading edge at 1.5 flap_gap."""
+    main = dict(code="2412", chord=1.0, pitch=0.0, at=(0.0, 0.0), pivot=(0.0, 0.0))
+    elements = [main]
+    fixed = outline(**main)
+    flap = lambda s: dict(code="0009", chord=0.3, pitch=25.0, at=(0.9, -0.02 - s),
+                          pivot=(0.0, 0.0))
+    s = solve_offset(fixed, lambda s: outline(**flap(s)), flap_gap, -0.05, 0.3)
+    elements.append(flap(s))
+    if slat:
+        sl = lambda s: dict(code="0012", chord=0.16, pitch=-30.0, at=(0.03 - s, 0.02 - s / 2),
+                            pivot=(1.0, 0.0))
+        s = solve_offset(fixed, lambda s: outline(**sl(s)), 1.5 * flap_gap, -0.05, 0.4)
+        elements.append(sl(s))
+    bodies = [add_aerofoil(**e) for e in elements]
+    gmsh.model.occ.rotate([(2, b) for b in bodies], 0.25, 0, 0, 0, 0, 1, -math.radians(aoa))
+    return bodies, (-2, -2, 3, 2)
+
+
+def shape_ellipses(centres, a, b=None, turn=0.0, domain=(-2, -2, 3, 2)):
+    occ = gmsh.model.occ
+    bodies = []
+    for cx, cy in centres:
+        d = occ.addDisk(cx, cy, 0, a, b or a)
+        if turn:
+            occ.rotate([(2, d)], cx, cy, 0, 0, 0, 1, math.radians(turn))
+        bodies.append(d)
+    return bodies, domain
+
+
+def shape_star(seed, modes=6, amplitude=0.25, n=96):
+    """A smooth star-shaped body: r(phi) = 0.5 (1 + sum_k a_k cos(k phi + c_k)), k = 2..modes,
+    random a_k ~ amplitude / k (fixed seed), as a periodic spline through n points."""
+    rng = np.random.default_rng(seed)
+    k = np.arange(2, modes + 1)
+    a = amplitude * rng.uniform(0.3, 1.0, len(k)) / k * rng.choice([-1, 1], len(k))
+    c = rng.uniform(0, 2 * math.pi, len(k))
+    occ = gmsh.model.occ
+    phi = np.arange(n) * 2 * math.pi / n
+    r = 0.5 * (1 + (a[None, :] * np.cos(k[None, :] * phi[:, None] + c[None, :])).sum(axis=1))
+    pts = [occ.addPoint(0.5 + ri * math.cos(f), ri * math.sin(f), 0) for ri, f in zip(r, phi)]
+    curve = occ.addSpline(pts + [pts[0]])
+    occ.remove([(0, t) for t in pts[1:]])
+    return [occ.addPlaneSurface([occ.addCurveLoop([curve])])], (-1.5, -2, 3, 2)
+
+
+def shape_lshape(fillet=0.05, hole=0.2):
+    """An L-shaped domain [0,2]x[0,1] u [0,1]x[0,2] whose re-entrant corner (1,1) is rounded
+    by an arc of radius `fillet`, with a circular hole of radius `hole` at (0.5, 0.5). The
+    walls: the arc, the two straight edges that meet it, and the hole."""
+    occ = gmsh.model.occ
+    r = fillet
+    p = [occ.addPoint(x, y, 0) for x, y in
+         [(0, 0), (2, 0), (2, 1), (1 + r, 1), (1, 1 + r), (1, 2), (0, 2)]]
+    centre = occ.addPoint(1 + r, 1 + r, 0)
+    lines = [occ.addLine(p[0], p[1]), occ.addLine(p[1], p[2]), occ.addLine(p[2], p[3]),
+             occ.addCircleArc(p[3], centre, p[4]), occ.addLine(p[4], p[5]),
+             occ.addLine(p[5], p[6]), occ.addLine(p[6], p[0])]
+    occ.remove([(0, centre)])
+    outer = occ.addCurveLoop(lines)
+    disk = occ.addCircle(0.5, 0.5, 0, hole)
+    surface = occ.addPlaneSurface([outer, occ.addCurveLoop([disk])])
+    return surface, lines[2:5] + [disk]
+
+
+def shape_plate_holes():
+    """A 3 x 2 plate with a circle, a slanted 3:1 ellipse and a small circle cut out."""
+    occ = gmsh.model.occ
+    holes = [occ.addDisk(0.8, 1.0, 0, 0.3, 0.3), occ.addDisk(1.9, 0.7, 0, 0.36, 0.12),
+             occ.addDisk(2.2, 1.45, 0, 0.08, 0.08)]
+    occ.rotate([(2, holes[1])], 1.9, 0.7, 0, 0, 0, 1, math.radians(30))
+    return holes, (0, 0, 3, 2)
+
+
+SHAPES = dict(aerofoil=shape_aerofoil, multi=shape_multi, ellipses=shape_ellipses,
+              star=shape_star, lshape=shape_lshape, plate_holes=shape_plate_holes)
+
+
+# ---------------------------------------------------------------- cases
+
+@dataclass
+class Case:
+    name: str
+    shape: str
+    args: dict
+    mesher: str            # gmsh_bl | layers | none | voronoi
+    h_wall: float          # mesh size at the wall
+    h_far: float = 0.3     # mesh size far from it
+    first: float = 0.0     # first-cell height (0: no layers)
+    n: int = 0             # number of layers
+    ratio: float = 1.2
+    fan: int = 5           # fan elements at sharp points (gmsh_bl) / normals per fan (layers)
+    tags: list = field(default_factory=list)
+
+    @property
+    def thickness(self):
+        return self.first * (self.ratio ** self.n - 1) / (self.ratio - 1) if self.n else 0.0
+
+
+def layers_for(first, ratio, total):
+    """The number of layers of a geometric stack from `first` reaching about `total`."""
+    return max(3, int(round(math.log(1 + total * (ratio - 1) / first) / math.log(ratio))))
+
+
+def _cases():
+    C = []
+
+    def add(name, shape, args, mesher, h_wall, first=0.0, ratio=1.2, total=None, **kw):
+        n = layers_for(first, ratio, total if total else h_wall) if first else 0
+        C.append(Case(name, shape, args, mesher, h_wall, first=first, n=n, ratio=ratio, **kw))
+
+    A = "aerofoil"
+    # Single aerofoils: Gmsh's BoundaryLayer field.
+    add("naca0012_bl_1e-3_coarse", A, dict(code="0012"), "gmsh_bl", 0.04, 1e-3, 1.2)
+    add("naca0012_bl_1e-4", A, dict(code="0012"), "gmsh_bl", 0.02, 1e-4, 1.2)
+    add("naca0012_bl_1e-5_fine", A, dict(code="0012"), "gmsh_bl", 0.01, 1e-5, 1.3)
+    add("naca0006_bl_1e-4", A, dict(code="0006"), "gmsh_bl", 0.02, 1e-4, 1.15)
+    add("naca0024_bl_1e-3", A, dict(code="0024"), "gmsh_bl", 0.03, 1e-3, 1.3)
+    add("naca4412_a8_bl_1e-4", A, dict(code="4412", aoa=8), "gmsh_bl", 0.02, 1e-4, 1.2)
+    add("naca2412_a-4_bl_1e-5", A, dict(code="2412", aoa=-4), "gmsh_bl", 0.02, 1e-5, 1.3)
+    add("naca6409_bl_1e-4", A, dict(code="6409"), "gmsh_bl", 0.015, 1e-4, 1.2)
+    add("naca9415_a5_bl_1e-3", A, dict(code="9415", aoa=5), "gmsh_bl", 0.03, 1e-3, 1.15)
+    add("naca23012_bl_1e-4", A, dict(code="23012"), "gmsh_bl", 0.02, 1e-4, 1.2)
+    add("naca23015_a12_bl_1e-5", A, dict(code="23015", aoa=12), "gmsh_bl", 0.015, 1e-5, 1.25)
+    add("naca24021_bl_1e-3_coarse", A, dict(code="24021"), "gmsh_bl", 0.05, 1e-3, 1.2)
+    # Single aerofoils: homesh's layers, no layers, voronoi.
+    add("naca0012_layers_1e-3", A, dict(code="0012"), "layers", 0.02, 1e-3, 1.2)
+    add("naca4412_a8_layers_1e-4", A, dict(code="4412", aoa=8), "layers", 0.02, 1e-4, 1.25)
+    add("naca23012_layers_1e-4_coarse", A, dict(code="23012"), "layers", 0.04, 1e-4, 1.3)
+    add("naca0012_nolayer_coarse", A, dict(code="0012"), "none", 0.05)
+    add("naca4412_a8_nolayer_fine", A, dict(code="4412", aoa=8), "none", 0.01)
+    add("naca0012_voronoi", A, dict(code="0012"), "voronoi", 0.02)
+    add("naca23015_voronoi_coarse", A, dict(code="23015"), "voronoi", 0.04)
+    # Multi-element.
+    M = "multi"
+    add("flap_gap02_bl_1e-4", M, dict(flap_gap=0.02), "gmsh_bl", 0.015, 1e-4, 1.2, total=0.005)
+    add("flap_gap01_bl_1e-5", M, dict(flap_gap=0.01), "gmsh_bl", 0.01, 1e-5, 1.3, total=0.003)
+    add("slat_flap_bl_1e-4", M, dict(flap_gap=0.015, slat=True), "gmsh_bl", 0.01, 1e-4, 1.2,
+        total=0.004)
+    add("flap_gap02_layers_1e-4", M, dict(flap_gap=0.02), "layers", 0.015, 1e-4, 1.2,
+        total=0.005)
+    add("flap_gap02_nolayer", M, dict(flap_gap=0.02), "none", 0.015)
+    add("slat_flap_nolayer_fine", M, dict(flap_gap=0.015, slat=True), "none", 0.006)
+    add("slat_flap_voronoi", M, dict(flap_gap=0.015, slat=True), "voronoi", 0.01)
+    # Circles and ellipses.
+    E = "ellipses"
+    one = dict(centres=[(0.5, 0)], a=0.5)
+    row = dict(centres=[(x, y) for x in (0, 0.55, 1.1) for y in (-0.3, 0.3)], a=0.2,
+               domain=(-1.5, -1.5, 2.5, 1.5))
+    add("circle_bl_1e-3_coarse", E, one, "gmsh_bl", 0.1, 1e-3, 1.3)
+    add("circle_bl_1e-5_fine", E, one, "gmsh_bl", 0.015, 1e-5, 1.25)
+    add("ellipse4_a10_bl_1e-4", E, dict(centres=[(0.5, 0)], a=0.5, b=0.125, turn=-10),
+        "gmsh_bl", 0.02, 1e-4, 1.2)
+    add("ellipse10_bl_1e-4", E, dict(centres=[(0.5, 0)], a=0.5, b=0.05), "gmsh_bl", 0.015,
+        1e-4, 1.2)
+    add("circles6_bl_1e-3", E, row, "gmsh_bl", 0.03, 1e-3, 1.2, total=0.02)
+    add("circles6_layers_1e-3", E, row, "layers", 0.03, 1e-3, 1.2, total=0.02)
+    add("ellipse4_a10_layers_1e-4", E, dict(centres=[(0.5, 0)], a=0.5, b=0.125, turn=-10),
+        "layers", 0.02, 1e-4, 1.25)
+    add("circle_nolayer_coarse", E, one, "none", 0.3)
+    add("circles6_nolayer", E, row, "none", 0.04)
+    add("circle_voronoi", E, one, "voronoi", 0.05)
+    add("ellipses_voronoi", E, dict(centres=[(0, 0), (1.2, 0.2)], a=0.4, b=0.15, turn=20),
+        "voronoi", 0.03)
+    # Smooth random star-shaped bodies.
+    S = "star"
+    add("star1_bl_1e-3", S, dict(seed=1), "gmsh_bl", 0.03, 1e-3, 1.2)
+    add("star2_bl_1e-4_fine", S, dict(seed=2, amplitude=0.35), "gmsh_bl", 0.01, 1e-4, 1.2)
+    add("star3_layers_1e-3", S, dict(seed=3), "layers", 0.03, 1e-3, 1.2)
+    add("star4_nolayer_coarse", S, dict(seed=4, amplitude=0.35), "none", 0.08)
+    add("star5_voronoi", S, dict(seed=5), "voronoi", 0.03)
+    # Re-entrant corner, holes.
+    add("lshape_r05_bl_1e-3", "lshape", dict(fillet=0.05), "gmsh_bl", 0.03, 1e-3, 1.2,
+        total=0.01)
+    add("lshape_r02_layers_1e-4", "lshape", dict(fillet=0.02), "layers", 0.03, 1e-4, 1.3,
+        total=0.01)
+    add("lshape_r02_nolayer", "lshape", dict(fillet=0.02), "none", 0.05)
+    add("lshape_r05_voronoi", "lshape", dict(fillet=0.05), "voronoi", 0.04)
+    add("plate_holes_bl_1e-4", "plate_holes", {}, "gmsh_bl", 0.02, 1e-4, 1.2)
+    add("plate_holes_layers_1e-3", "plate_holes", {}, "layers", 0.03, 1e-3, 1.2)
+    add("plate_holes_nolayer_coarse", "plate_holes", {}, "none", 0.1)
+    return C
+
+
+CASES = _cases()
+
+
+def case(name):
+    for c in CASES:
+        if c.name == name:
+            return c
+    raise KeyError(f"no corpus case '{name}'")
+
+
+def select(patterns=None):
+    """The cases whose names match any of the comma-separated shell patterns (substrings
+    match too), in the order of the patterns (all cases, in corpus order, if none)."""
+    if not patterns:
+        return list(CASES)
+    pats = [p if any(ch in p for ch in "*?[") else f"*{p}*" for p in patterns.split(",")]
+    chosen = []
+    for p in pats:
+        chosen += [c for c in CASES if fnmatch.fnmatch(c.name, p) and c not in chosen]
+    return chosen
+
+
+# ---------------------------------------------------------------- building
+
+def _cad(c):
+    """The case's CAD; returns (surface tags, wall curve tags, farfield curve tags)."""
+    occ = gmsh.model.occ
+    made = SHAPES[c.shape](**c.args)
+    if c.shape == "lshape":
+        surface, walls = made
+        occ.synchronize()
+        boundary = [t for _, t in gmsh.model.getBoundary([(2, surface)], oriented=False)]
+        return [surface], walls, [t for t in boundary if t not in walls]
+    bodies, domain = made
+    fluid, _ = occ.cut([(2, box(*domain))], [(2, b) for b in bodies])
+    occ.synchronize()
+    x0, y0, x1, y1 = domain
+    walls, farfield = [], []
+    for _, t in gmsh.model.getBoundary(fluid, oriented=False):
+        bx0, by0, _, bx1, by1, _ = gmsh.model.getBoundingBox(1, abs(t))
+        on_box = (min(abs(bx0 - x0), abs(bx1 - x1)) < 1e-6 and abs(bx1 - bx0) < 1e-6) or \
+                 (min(abs(by0 - y0), abs(by1 - y1)) < 1e-6 and abs(by1 - by0) < 1e-6)
+        (farfield if on_box else walls).append(abs(t))
+    return [t for _, t in fluid], walls, farfield
+
+
+def sharp_points(walls, limit=60.0):
+    """Wall CAD points where two wall curves meet at a wedge narrower than `limit` degrees
+    (a sharp trailing edge): the points that get a fan."""
+    ends = {}
+    for c in walls:
+        lo, hi = gmsh.model.getParametrizationBounds(1, c)
+        b = gmsh.model.getBoundary([(1, c)], oriented=True, combined=False)
+        if len(b) != 2:
+            continue
+        for (_, p), u, sign in [(b[0], lo[0], 1.0), (b[1], hi[0], -1.0)]:
+            d = np.array(gmsh.model.getDerivative(1, c, [u])[:2]) * sign
+            ends.setdefault(abs(p), []).append(d / np.linalg.norm(d))
+    sharp = []
+    for p, ds in ends.items():
+        if len(ds) == 2:
+            angle = math.degrees(math.acos(np.clip(np.dot(ds[0], ds[1]), -1, 1)))
+            if angle < limit:
+                sharp.append(p)
+    return sorted(sharp)
+
+
+def smooth_points(walls, limit=1.0):
+    """Wall CAD points where two wall curves meet with tangents within `limit` degrees (or a
+    closed curve meets itself): the wall is smooth there."""
+    ends = {}
+    for c in walls:
+        lo, hi = gmsh.model.getParametrizationBounds(1, c)
+        b = gmsh.model.getBoundary([(1, c)], oriented=True, combined=False)
+        if len(b) == 0:
+            continue
+        if len(b) == 1 or abs(b[0][1]) == abs(b[-1][1]):   # closed curve (circle, star)
+            ends.setdefault(abs(b[0][1]), [])
+        for (_, p), u, sign in [(b[0], lo[0], 1.0), (b[-1], hi[0], -1.0)]:
+            d = np.array(gmsh.model.getDerivative(1, c, [u])[:2]) * sign
+            ends.setdefault(abs(p), []).append(d / np.linalg.norm(d))
+    smooth = set()
+    for p, ds in ends.items():
+        if len(ds) == 2 and math.degrees(math.acos(np.clip(-np.dot(ds[0], ds[1]), -1, 1))) < limit:
+            smooth.add(p)
+    return smooth
+
+
+def _sizes(c, walls):
+    f = gmsh.model.mesh.field
+    d = f.add("Distance")
+    f.setNumbers(d, "CurvesList", walls)
+    f.setNumber(d, "NumPointsPerCurve", 400)
+    t = f.add("Threshold")
+    for name, value in [("InField", d), ("SizeMin", c.h_wall), ("SizeMax", c.h_far),
+                        ("DistMin", max(c.thickness, 0.5 * c.h_wall)), ("DistMax", 1.2)]:
+        f.setNumber(t, name, value)
+    f.setAsBackgroundMesh(t)
+    for name, value in [("Mesh.MeshSizeFromPoints", 0), ("Mesh.MeshSizeFromCurvature", 0),
+                        ("Mesh.MeshSizeExtendFromBoundary", 0), ("Mesh.Algorithm", 6)]:
+        gmsh.option.setNumber(name, value)
+
+
+def _gmsh_bl(c, walls):
+    f = gmsh.model.mesh.field
+    b = f.add("BoundaryLayer")
+    f.setNumbers(b, "CurvesList", walls)
+    f.setNumber(b, "Size", c.first)
+    f.setNumber(b, "Ratio", c.ratio)
+    # Gmsh adds layers while their total stays below Thickness: a hair above the n-th.
+    f.setNumber(b, "Thickness", c.thickness * (1 + 1e-6))
+    f.setNumber(b, "Quads", 0)
+    fans = sharp_points(walls)
+    if fans:
+        f.setNumbers(b, "FanPointsList", fans)
+        gmsh.option.setNumber("Mesh.BoundaryLayerFanElements", c.fan - 1)
+    f.setAsBoundaryLayer(b)
+    gmsh.model.mesh.generate(2)
+
+
+def build(c, quiet=True):
+    """Recreate case c (a Case or its name) in the current Gmsh session: clear the model, make
+    the CAD and the linear mesh. Returns the case's record (a dict, see `record`)."""
+    if isinstance(c, str):
+        c = case(c)
+    gmsh.clear()
+    gmsh.model.add(c.name)
+    surfaces, walls, farfield = _cad(c)
+    for dim, tags, name in [(1, walls, WALL), (1, farfield, "farfield"), (2, surfaces, "fluid")]:
+        if tags:
+            gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), name)
+    _sizes(c, walls)
+    if c.mesher == "gmsh_bl":
+        _gmsh_bl(c, walls)
+    elif c.mesher in ("layers", "none"):
+        gmsh.model.mesh.generate(2)
+        if c.mesher == "layers":
+            import homesh
+            homesh.set_quiet(quiet)
+            opts = dict(walls=WALL, n=c.n, first=c.first, ratio=c.ratio)
+            if sharp_points(walls):
+                opts.update(normals="multi", fan=c.fan, fan_angle=320)
+            homesh.layers(**opts)
+    elif c.mesher == "voronoi":
+        import homesh
+        homesh.set_quiet(quiet)
+        homesh.voronoi()
+    else:
+        raise ValueError(f"case {c.name}: unknown mesher {c.mesher}")
+    return record(c, walls)
+
+
+def load(c, msh):
+    """Recreate case c's CAD in the current Gmsh session and merge its linear mesh from `msh`
+    (a file `write` made): the same model as `build`, without meshing again. Returns the
+    case's record."""
+    if isinstance(c, str):
+        c = case(c)
+    gmsh.clear()
+    gmsh.model.add(c.name)
+    _, walls, _ = _cad(c)
+    gmsh.merge(msh)
+    names = {gmsh.model.getPhysicalName(d, t) for d, t in gmsh.model.getPhysicalGroups(1)}
+    if WALL not in names:
+        raise RuntimeError(f"{msh}: no physical curve '{WALL}'")
+    return record(c, walls)
+
+
+def write(c, path):
+    """Build case c and write its linear mesh to path (.msh) and its CAD beside it (.brep).
+    Returns the record. Gmsh's meshes are saved with their nodes' parametric coordinates
+    (merged back by `load`, the same model to 1e-11); homesh's layers and voronoi meshes
+    without: homesh gives the nodes it makes on boundary curves none (an L-shape's layers
+    ending on the far-field lines), and a file saved with some merges broken (setOrder left
+    every triangle invalid); without any, `load` gives what `build` does (checked: setOrder
+    identical, homesh's curve within 1e-5)."""
+    rec = build(c)
+    gmsh.option.setNumber("Mesh.SaveParametric", 1 if c.mesher in ("gmsh_bl", "none") else 0)
+    gmsh.write(path)
+    gmsh.write(os.path.splitext(path)[0] + ".brep")
+    return rec
+
+
+# ---------------------------------------------------------------- records
+
+def _coords():
+    tags, xyz, _ = gmsh.model.mesh.getNodes()
+    return dict(zip(tags.astype(int).tolist(), xyz.reshape(-1, 3)[:, :2]))
+
+
+def wall_edges(walls):
+    """The linear wall edges (node tag pairs) of the wall curves."""
+    edges = []
+    for c in walls:
+        for t, nodes in zip(*gmsh.model.mesh.getElements(1, c)[::2]):
+            k = gmsh.model.mesh.getElementProperties(t)[3]
+            n = np.asarray(nodes, dtype=int).reshape(-1, k)
+            edges += [(int(a), int(b)) for a, b in n[:, :2]]
+    return edges
+
+
+def record(c, walls):
+    """Counts, the wall's turning angles and the first-cell height of the current model."""
+    x = _coords()
+    triangles, others = 0, 0
+    tri = []
+    for t, tags, nodes in zip(*gmsh.model.mesh.getElements(2)):
+        name, _, order, k, _, _ = gmsh.model.mesh.getElementProperties(t)
+        if name.startswith("Triangle") and order == 1:
+            triangles += len(tags)
+            tri.append(np.asarray(nodes, dtype=int).reshape(-1, 3))
+        else:
+            others += len(tags)
+    edges = wall_edges(walls)
+    # Turning angle at each wall node shared by two wall edges.
+    incident = {}
+    for a, b in edges:
+        incident.setdefault(a, []).append(b)
+        incident.setdefault(b, []).append(a)
+    smooth = smooth_points(walls)
+    corner_nodes = set()
+    for _, p in gmsh.model.getEntities(0):
+        nodes = gmsh.model.mesh.getNodes(0, p)[0]
+        if len(nodes) and p not in smooth:
+            corner_nodes.add(int(nodes[0]))
+    turn_all, turn_smooth = 0.0, 0.0
+    for v, nb in incident.items():
+        if len(nb) != 2:
+            continue
+        u, w = x[v] - x[nb[0]], x[nb[1]] - x[v]
+        a = math.degrees(math.acos(np.clip(np.dot(u, w) / np.linalg.norm(u) / np.linalg.norm(w),
+                                           -1, 1)))
+        turn_all = max(turn_all, a)
+        if v not in corner_nodes:
+            turn_smooth = max(turn_smooth, a)
+    # First-cell height: over the wall nodes, the shortest mesh edge to a node off the wall.
+    on_wall = set(incident)
+    heights = {}
+    if tri:
+        T = np.vstack(tri)
+        for i, j in [(0, 1), (1, 2), (2, 0)]:
+            for a, b in zip(T[:, i].tolist(), T[:, j].tolist()):
+                for v, o in ((a, b), (b, a)):
+                    if v in on_wall and o not in on_wall:
+                        h = float(np.linalg.norm(x[v] - x[o]))
+                        if h < heights.get(v, math.inf):
+                            heights[v] = h
+    h = np.array(list(heights.values())) if heights else np.array([math.nan])
+    return dict(case=c.name, shape=c.shape, mesher=c.mesher, h_wall=c.h_wall, first=c.first,
+                layers=c.n, ratio=c.ratio if c.n else "", triangles=triangles, other_2d=others,
+                wall_edges=len(edges), first_min=float(h.min()), first_median=float(np.median(h)),
+                turn_deg=round(turn_smooth, 2), turn_all_deg=round(turn_all, 2),
+                target=0.9 if turn_smooth < 30 else 0.8)
+
+
+# ---------------------------------------------------------------- command line
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--list", action="store_true", help="list the cases and exit")
+    ap.add_argument("--cases", help="comma-separated name patterns (substring or glob)")
+    ap.add_argument("--out", default=os.path.join(ROOT, "out", "bench", "corpus", "meshes"))
+    args = ap.parse_args(argv)
+    cases = select(args.cases)
+    if args.list:
+        for c in cases:
+            print(f"{c.name:<30} {c.shape:<11} {c.mesher:<8} h_wall {c.h_wall:<6g} "
+                  f"first {c.first:<6g} n {c.n:<3} ratio {c.ratio:g}")
+        return 0
+    os.makedirs(args.out, exist_ok=True)
+    rows = []
+    for c in cases:
+        gmsh.initialize()
+        gmsh.option.setNumber("General.Terminal", 0)
+        rec = write(c, os.path.join(args.out, c.name + ".msh"))
+        gmsh.finalize()
+        rows.append(rec)
+        print(" ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}"
+                       for k, v in rec.items()), flush=True)
+    with open(os.path.join(args.out, "corpus.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print(f"{len(rows)} cases -> {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
