@@ -74,33 +74,33 @@ class PatchOptimiser {
     int node;     // node slot in the element
   };
 
-  double element_energy(int le, Eigen::Matrix2Xd* gradient) const {
+  // The nodes of patch element le, in a buffer reused by every call.
+  const Eigen::Matrix2Xd& nodes(int le) const {
     const int e = patch_.elements[le];
-    Eigen::Matrix2Xd X(2, m_.tri.rows());
-    for (int k = 0; k < m_.tri.rows(); ++k) X.col(k) = x_.col(m_.tri(k, e));
-    return distortion_energy(X, tab_, target_[le], opt_.energy, gradient);
+    X_.resize(2, m_.tri.rows());
+    for (int k = 0; k < m_.tri.rows(); ++k) X_.col(k) = x_.col(m_.tri(k, e));
+    return X_;
+  }
+
+  double element_energy(int le, Eigen::Matrix2Xd* gradient) const {
+    return distortion_energy(nodes(le), tab_, target_[le], opt_.energy, gradient);
   }
 
   // Energy of node i's star and its gradient by the node's position.
   double star_energy(int i, Eigen::Vector2d* g) const {
     double E = 0;
     if (g) g->setZero();
-    Eigen::Matrix2Xd grad;
     for (const Slot& s : star_[i]) {
-      E += element_energy(s.element, g ? &grad : nullptr);
+      E += element_energy(s.element, g ? &grad_ : nullptr);
       if (!std::isfinite(E)) return E;
-      if (g) *g += grad.col(s.node);
+      if (g) *g += grad_.col(s.node);
     }
     return E;
   }
 
   bool star_certified_valid(int i) const {
-    for (const Slot& s : star_[i]) {
-      const int e = patch_.elements[s.element];
-      Eigen::Matrix2Xd X(2, m_.tri.rows());
-      for (int k = 0; k < m_.tri.rows(); ++k) X.col(k) = x_.col(m_.tri(k, e));
-      if (!jacobian_bounds(X, m_.order, opt_.bounds).valid_certified) return false;
-    }
+    for (const Slot& s : star_[i])
+      if (!jacobian_bounds(nodes(s.element), m_.order, opt_.bounds).valid_certified) return false;
     return true;
   }
 
@@ -174,6 +174,7 @@ class PatchOptimiser {
   std::vector<Eigen::Matrix2d> target_;
   std::vector<double> energy_;
   std::vector<std::vector<Slot>> star_;
+  mutable Eigen::Matrix2Xd X_, grad_;  // buffers of nodes() and star_energy()
 };
 
 // Certified minJ/maxJ of triangle e with nodes at x; -infinity unless certified valid.
