@@ -20,6 +20,7 @@ namespace {
 
 constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
 constexpr int kMaxHalvings = 20;
+constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
 
 // One patch being optimised on the shared coordinates x (its free nodes are its own).
 class PatchOptimiser {
@@ -46,6 +47,8 @@ class PatchOptimiser {
     for (int k = 0; k < static_cast<int>(patch.free_nodes.size()); ++k)
       local[patch.free_nodes[k]] = k;
     star_.resize(patch.free_nodes.size());
+    visited_.assign(patch.free_nodes.size(), -1);
+    changed_.assign(ne, 0);
     for (int le = 0; le < ne; ++le)
       for (int k = 0; k < m.tri.rows(); ++k) {
         const int i = local[m.tri(k, patch.elements[le])];
@@ -60,9 +63,17 @@ class PatchOptimiser {
     return E;
   }
 
-  // One node-by-node sweep; returns the patch energy after it.
+  // One node-by-node sweep; returns the patch energy after it. A node is visited only
+  // if some element round it changed since its last visit (all of them in the first
+  // sweep): converged regions of a large patch cost nothing.
   double sweep() {
-    for (int i = 0; i < static_cast<int>(star_.size()); ++i) move_node(i);
+    for (int i = 0; i < static_cast<int>(star_.size()); ++i) {
+      bool stale = visited_[i] < 0;
+      for (const Slot& s : star_[i]) stale = stale || changed_[s.element] > visited_[i];
+      if (!stale) continue;
+      visited_[i] = clock_;
+      move_node(i);
+    }
     double E = 0;
     for (double e : energy_) E += e;
     return E;
@@ -159,7 +170,14 @@ class PatchOptimiser {
       x_.col(node) = x0 + t * dir;
       const double E = star_energy(i, nullptr);
       if (std::isfinite(E) && E < E0 + kArmijo * t * slope && star_certified_valid(i)) {
-        for (const Slot& s : star_[i]) energy_[s.element] = element_energy(s.element, nullptr);
+        // Moves that lower the star's energy by less than kNegligible of it do not
+        // wake the neighbours.
+        const bool moved = E0 - E > kNegligible * E0;
+        if (moved) ++clock_;
+        for (const Slot& s : star_[i]) {
+          energy_[s.element] = element_energy(s.element, nullptr);
+          if (moved) changed_[s.element] = clock_;
+        }
         return;
       }
     }
@@ -175,6 +193,10 @@ class PatchOptimiser {
   std::vector<double> energy_;
   std::vector<std::vector<Slot>> star_;
   mutable Eigen::Matrix2Xd X_, grad_;  // buffers of nodes() and star_energy()
+  // Move clock: changed_[element] is the clock of the last move in it, visited_[node]
+  // the clock at the node's last visit (-1: never).
+  long clock_ = 0;
+  std::vector<long> changed_, visited_;
 };
 
 // Certified minJ/maxJ of triangle e with nodes at x; -infinity unless certified valid.
