@@ -42,17 +42,18 @@ class PatchOptimiser {
                         ? Eigen::Matrix2d(J_lin.inverse())
                         : ideal_jacobian(Eigen::Matrix2d::Identity());
     }
-    // Element-local stars of the free nodes: (patch element, node slot in it).
-    std::vector<int> local(m.num_nodes(), -1);
-    for (int k = 0; k < static_cast<int>(patch.free_nodes.size()); ++k)
-      local[patch.free_nodes[k]] = k;
-    star_.resize(patch.free_nodes.size());
+    // Element-local stars of the free nodes: (patch element, node slot in it); the free
+    // nodes are ascending, so a node's place among them is a binary search (no #nodes
+    // table per patch).
+    const std::vector<int>& free = patch.free_nodes;
+    star_.resize(free.size());
     visited_.assign(patch.free_nodes.size(), -1);
     changed_.assign(ne, 0);
     for (int le = 0; le < ne; ++le)
       for (int k = 0; k < m.tri.rows(); ++k) {
-        const int i = local[m.tri(k, patch.elements[le])];
-        if (i >= 0) star_[i].push_back({le, k});
+        const int node = m.tri(k, patch.elements[le]);
+        const auto it = std::lower_bound(free.begin(), free.end(), node);
+        if (it != free.end() && *it == node) star_[it - free.begin()].push_back({le, k});
       }
   }
 
