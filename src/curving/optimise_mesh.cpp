@@ -241,7 +241,13 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   res.invalid = before.invalid;
   res.worst_before = before.worst;
 
+  // Held: the caller's nodes, every node of an element not certified valid (no
+  // untangling: the barrier needs a valid start; such an element ends up in no patch,
+  // and the patches round it still move), and the vertices unless free_vertices.
   std::vector<bool> held = fixed;
+  for (int e = 0; e < m.num_triangles(); ++e)
+    if (!valid[e])
+      for (int k = 0; k < m.tri.rows(); ++k) held[m.tri(k, e)] = true;
   if (!opt.free_vertices) {
     const std::vector<bool> vertex = vertex_nodes(m);
     for (int i = 0; i < m.num_nodes(); ++i) held[i] = held[i] || vertex[i];
@@ -263,7 +269,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
       all_valid = all_valid && valid[e];
       worst = std::min(worst, ratio(e));
     }
-    if (!all_valid) continue;  // no untangling: the barrier needs a valid start
+    if (!all_valid) continue;  // cannot happen (their nodes are held), kept as a guard
     Eigen::Matrix2Xd start(2, patch.free_nodes.size());
     for (int i = 0; i < start.cols(); ++i) start.col(i) = x.col(patch.free_nodes[i]);
     PatchOptimiser po(m, x, patch, tab, opt);

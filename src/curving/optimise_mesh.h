@@ -26,8 +26,8 @@
 // Boundary nodes: in this first version every node on a model point or curve
 // is held (pass them in `fixed`); sliding along the CAD curve by parameter
 // (Toulorge et al. Sec 3.3, Turner et al. Sec 5) is a follow-up. Elements not
-// certified valid are never repaired (no untangling): patches holding one are
-// left as they are.
+// certified valid are never repaired (no untangling): their nodes are held,
+// the patches round them are optimised as usual.
 #include <vector>
 
 #include "core/mesh.h"

@@ -114,3 +114,28 @@ TEST_CASE("optimise: a thin curved layer's bulge is spread into the elements abo
     CHECK(r.worst_after > r.worst_before + 0.05);
   }
 }
+
+TEST_CASE("optimise: an invalid element is left alone, the rest still optimised",
+          "[curving]") {
+  Mesh m = square(8, 2);
+  perturb(m, 0.3, 1.0 / 8, 2);
+  const MeshValidity start = mesh_validity(m);
+  REQUIRE(start.invalid == 0);
+  // Fold one triangle in a corner of the square: its interior mid-edge node pushed past
+  // the opposite vertex.
+  const int e = 0;
+  const int mid = m.tri(4, e);  // edge 1-2, interior to the square
+  REQUIRE(vertex_nodes(m)[mid] == false);
+  REQUIRE(boundary_nodes(m)[mid] == false);
+  const Eigen::Vector2d a = m.x.col(m.tri(0, e));
+  m.x.col(mid) = a + 0.2 * (a - m.x.col(mid));
+  const MeshValidity folded = mesh_validity(m);
+  REQUIRE(folded.invalid >= 1);
+  const OptimiseResult r = optimise_mesh(m, boundary_nodes(m));
+  const MeshValidity after = mesh_validity(r.mesh);
+  CHECK(r.invalid == folded.invalid);
+  CHECK(after.invalid == folded.invalid);  // no untangling, and nothing new folded
+  CHECK(r.mesh.x.col(mid) == m.x.col(mid));
+  CHECK(r.accepted > 0);  // the patches far from the fold were optimised
+  CHECK(r.poor_after < r.poor_before);
+}
