@@ -25,9 +25,11 @@ constexpr double kNegligible = 1e-9;  // relative energy drop of a node move tha
 // One patch being optimised on the shared coordinates x (its free nodes are its own).
 class PatchOptimiser {
  public:
+  // floor: the patch's worst certified minJ/maxJ at the start, which no step may
+  // take an element below.
   PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, const OptimisationPatch& patch,
-                 const ElementTabulation& tab, const OptimiseOptions& opt)
-      : m_(m), x_(x), patch_(patch), tab_(tab), opt_(opt) {
+                 const ElementTabulation& tab, const OptimiseOptions& opt, double floor)
+      : m_(m), x_(x), patch_(patch), tab_(tab), opt_(opt), floor_(floor) {
     const int ne = static_cast<int>(patch.elements.size());
     target_.resize(ne);
     energy_.resize(ne);
@@ -110,9 +112,12 @@ class PatchOptimiser {
     return E;
   }
 
-  bool star_certified_valid(int i) const {
-    for (const Slot& s : star_[i])
-      if (!jacobian_bounds(nodes(s.element), m_.order, opt_.bounds).valid_certified) return false;
+  // Every element round node i certified valid with minJ/maxJ >= floor_.
+  bool star_certified(int i) const {
+    for (const Slot& s : star_[i]) {
+      const JacobianBounds b = jacobian_bounds(nodes(s.element), m_.order, opt_.bounds);
+      if (!b.valid_certified || scaled_jacobian_ratio(b) < floor_) return false;
+    }
     return true;
   }
 
@@ -133,7 +138,8 @@ class PatchOptimiser {
   }
 
   // A modified Newton step on node i, backtracked; the node stays if nothing lowers
-  // the energy with the star certified valid.
+  // the energy with every element round it certified valid and no worse than the
+  // patch's worst at the start (so a patch is reverted only by rounding).
   void move_node(int i) {
     const int node = patch_.free_nodes[i];
     const Eigen::Vector2d x0 = x_.col(node);
@@ -170,7 +176,7 @@ class PatchOptimiser {
     for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
       x_.col(node) = x0 + t * dir;
       const double E = star_energy(i, nullptr);
-      if (std::isfinite(E) && E < E0 + kArmijo * t * slope && star_certified_valid(i)) {
+      if (std::isfinite(E) && E < E0 + kArmijo * t * slope && star_certified(i)) {
         // Moves that lower the star's energy by less than kNegligible of it do not
         // wake the neighbours.
         const bool moved = E0 - E > kNegligible * E0;
@@ -190,6 +196,7 @@ class PatchOptimiser {
   const OptimisationPatch& patch_;
   const ElementTabulation& tab_;
   const OptimiseOptions& opt_;
+  double floor_;
   std::vector<Eigen::Matrix2d> target_;
   std::vector<double> energy_;
   std::vector<std::vector<Slot>> star_;
@@ -272,7 +279,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     if (!all_valid) continue;  // cannot happen (their nodes are held), kept as a guard
     Eigen::Matrix2Xd start(2, patch.free_nodes.size());
     for (int i = 0; i < start.cols(); ++i) start.col(i) = x.col(patch.free_nodes[i]);
-    PatchOptimiser po(m, x, patch, tab, opt);
+    PatchOptimiser po(m, x, patch, tab, opt, worst);
     PatchOutcome& o = outcome[k];
     double E = o.energy_before = po.total_energy();
     while (o.sweeps < opt.max_sweeps) {

@@ -15,7 +15,9 @@
 //    energy of the elements around it, the 2 by 2 Hessian from differences of
 //    the analytic gradient, its eigenvalues clamped positive (steepest descent
 //    if none is), backtracked (Armijo) until the energy drops and the
-//    elements around the node are certified valid. Sweeps stop when one
+//    elements around the node are certified valid with minJ/maxJ at least the
+//    patch's worst at the start (a sum of distortions can trade its worst
+//    element for the others; this floor forbids it step by step). Sweeps stop when one
 //    lowers the patch energy by less than `tolerance` (relative) or after
 //    `max_sweeps`.
 // 4. The patch's elements are certified again: the patch is kept only if all
