@@ -17,9 +17,9 @@
 //    if none is), backtracked (Armijo) until the energy drops and the
 //    elements around the node are certified valid with minJ/maxJ at least the
 //    patch's worst at the start (a sum of distortions can trade its worst
-//    element for the others; this floor forbids it step by step). Sweeps stop when one
-//    lowers the patch energy by less than `tolerance` (relative) or after
-//    `max_sweeps`.
+//    element for the others; this floor forbids it step by step). Sweeps stop
+//    when one lowers the patch energy by less than `tolerance` (relative) or
+//    after `max_sweeps`.
 // 4. The patch's elements are certified again: the patch is kept only if all
 //    are valid and its worst minJ/maxJ did not drop; otherwise its nodes go
 //    back where they were.
