@@ -105,6 +105,7 @@ Result mesh(const StageOptions& options) { return run("mesh", options); }
 Result order(const StageOptions& options) { return run("order", options); }
 Result layers(const StageOptions& options) { return run("layers", options); }
 Result curve(const StageOptions& options) { return run("curve", options); }
+Result optimise(const StageOptions& options) { return run("optimise", options); }
 Result rotate(const StageOptions& options) { return run("rotate", options); }
 Result quality(const StageOptions& options) { return run("quality", options); }
 Result info(const StageOptions& options) { return run("info", options); }

@@ -87,6 +87,7 @@ Result mesh(const StageOptions& options = {});
 Result order(const StageOptions& options = {});
 Result layers(const StageOptions& options = {});
 Result curve(const StageOptions& options = {});
+Result optimise(const StageOptions& options = {});
 Result rotate(const StageOptions& options = {});
 Result quality(const StageOptions& options = {});
 Result info(const StageOptions& options = {});

@@ -7,6 +7,7 @@
 #include "pipeline/stages/info_stage.h"
 #include "pipeline/stages/layers_stage.h"
 #include "pipeline/stages/mesh_stage.h"
+#include "pipeline/stages/optimise_stage.h"
 #include "pipeline/stages/order_stage.h"
 #include "pipeline/stages/quality_stage.h"
 #include "pipeline/stages/rotate_stage.h"
@@ -16,7 +17,7 @@ namespace homesh {
 
 const std::vector<Stage>& stages() {
   static const std::vector<Stage> table = {mesh_stage(), order_stage(), layers_stage(),
-                                           curve_stage(), rotate_stage(),
+                                           curve_stage(), optimise_stage(), rotate_stage(),
                                            quality_stage(), info_stage(),
                                            voronoi_stage()};
   return table;

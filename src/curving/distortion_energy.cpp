@@ -1,0 +1,84 @@
+#include "curving/distortion_energy.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace homesh {
+namespace {
+
+// d det J / dJ: the cofactor matrix.
+Eigen::Matrix2d cofactor(const Eigen::Matrix2d& J) {
+  Eigen::Matrix2d C;
+  C << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
+  return C;
+}
+
+}  // namespace
+
+double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
+                         const Eigen::Matrix2d& T, const DistortionEnergyOptions& opt,
+                         Eigen::Matrix2Xd* gradient) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const int q = static_cast<int>(tab.rule.weights.size());
+  const Eigen::VectorXd& w = tab.rule.weights;
+  thread_local std::vector<Eigen::Matrix2d> J;
+  thread_local std::vector<double> d;
+  J.resize(q);
+  d.resize(q);
+  double A = 0;
+  for (int i = 0; i < q; ++i) {
+    J[i].col(0) = X * tab.dNdu.col(i);
+    J[i].col(1) = X * tab.dNdv.col(i);
+    d[i] = J[i].determinant();
+    if (!(d[i] > 0)) return kInf;
+    A += w(i) * d[i];
+  }
+  for (int i = 0; i < q; ++i)
+    if (d[i] <= opt.epsilon * 2 * A) return kInf;
+  const double detT = T.determinant();
+  const Eigen::Matrix2d M = T * T.transpose();
+  const double r = opt.r, alpha = opt.alpha;
+  // Pointwise terms: Theta = s + alpha z (see the header).
+  double N = 0, dN_dA = 0;
+  // Theta^(r-1) at each point (pow is most of the cost: r = 2 is a product).
+  const auto power_r1 = [r](double t) { return r == 2 ? t : std::pow(t, r - 1); };
+  thread_local std::vector<double> theta, theta_r1, s, zprime;
+  theta.resize(q);
+  theta_r1.resize(q);
+  s.resize(q);
+  zprime.resize(q);
+  for (int i = 0; i < q; ++i) {
+    const double w2 = (J[i] * T).squaredNorm();
+    s[i] = w2 / (2 * d[i] * detT) - 1;
+    const double v = d[i] / (2 * A);
+    const double z = 0.5 * (v + 1 / v) - 1;
+    zprime[i] = 0.5 * (1 - 1 / (v * v));
+    theta[i] = std::max(0.0, s[i] + alpha * z);
+    theta_r1[i] = power_r1(theta[i]);
+    N += w(i) * d[i] * theta_r1[i] * theta[i];
+    // d/dA of Theta_i through v_i = d_i / (2A): dv/dA = -v / A.
+    dN_dA += w(i) * d[i] * r * theta_r1[i] * alpha * zprime[i] * (-v / A);
+  }
+  const double E = N / A;
+  if (!gradient) return E;
+  // E = N / A: dE/dJ_i = (1/A) dN/dJ_i|_A + (dN/dA / A - N / A^2) dA/dJ_i, dA/dJ_i = w_i cof J_i;
+  // dE/dX = sum_i dE/dJ_i D_i^T with J_i = X D_i, D_i = [dN/du dN/dv] at point i.
+  const double coupling = dN_dA / A - N / (A * A);
+  gradient->setZero(2, X.cols());
+  for (int i = 0; i < q; ++i) {
+    const Eigen::Matrix2d C = cofactor(J[i]);
+    const Eigen::Matrix2d ds = J[i] * M / (d[i] * detT) - (s[i] + 1) / d[i] * C;
+    const Eigen::Matrix2d dtheta = ds + alpha * zprime[i] / (2 * A) * C;
+    const double tr = theta_r1[i] * theta[i], tr1 = r * theta_r1[i];
+    const Eigen::Matrix2d G = w(i) * ((tr * C + d[i] * tr1 * dtheta) / A + coupling * C);
+    gradient->noalias() += G.col(0) * tab.dNdu.col(i).transpose();
+    gradient->noalias() += G.col(1) * tab.dNdv.col(i).transpose();
+  }
+  return E;
+}
+
+}  // namespace homesh

@@ -1,0 +1,322 @@
+#include "curving/optimise_mesh.h"
+
+#include <omp.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+#include "curving/deform_mesh.h"
+#include "curving/optimisation_patches.h"
+#include "fem/element_tabulation.h"
+#include "quality/ideal_jacobian.h"
+#include "quality/mesh_validity.h"
+
+namespace homesh {
+namespace {
+
+constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
+constexpr int kMaxHalvings = 20;
+constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
+
+// One patch being optimised on the shared coordinates x (its free nodes are its own).
+class PatchOptimiser {
+ public:
+  // floor: the patch's worst certified minJ/maxJ at the start, which no step may
+  // take an element below.
+  PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, const OptimisationPatch& patch,
+                 const ElementTabulation& tab, const OptimiseOptions& opt, double floor)
+      : m_(m), x_(x), patch_(patch), tab_(tab), opt_(opt), floor_(floor) {
+    const int ne = static_cast<int>(patch.elements.size());
+    target_.resize(ne);
+    energy_.resize(ne);
+    for (int le = 0; le < ne; ++le) {
+      const int e = patch.elements[le];
+      Eigen::Matrix2d J_lin;
+      J_lin.col(0) = x_.col(m.tri(1, e)) - x_.col(m.tri(0, e));
+      J_lin.col(1) = x_.col(m.tri(2, e)) - x_.col(m.tri(0, e));
+      // The straight-sided target needs a counter-clockwise straight element; a curved
+      // element whose corners alone turn clockwise keeps the ideal target.
+      target_[le] = opt.target == OptimiseOptions::Target::straight && J_lin.determinant() > 0
+                        ? Eigen::Matrix2d(J_lin.inverse())
+                        : ideal_jacobian(Eigen::Matrix2d::Identity());
+    }
+    // Element-local stars of the free nodes: (patch element, node slot in it); the free
+    // nodes are ascending, so a node's place among them is a binary search (no #nodes
+    // table per patch).
+    const std::vector<int>& free = patch.free_nodes;
+    star_.resize(free.size());
+    visited_.assign(patch.free_nodes.size(), -1);
+    changed_.assign(ne, 0);
+    for (int le = 0; le < ne; ++le)
+      for (int k = 0; k < m.tri.rows(); ++k) {
+        const int node = m.tri(k, patch.elements[le]);
+        const auto it = std::lower_bound(free.begin(), free.end(), node);
+        if (it != free.end() && *it == node) star_[it - free.begin()].push_back({le, k});
+      }
+  }
+
+  double total_energy() {
+    double E = 0;
+    for (int le = 0; le < static_cast<int>(energy_.size()); ++le)
+      E += energy_[le] = element_energy(le, nullptr);
+    return E;
+  }
+
+  // One node-by-node sweep; returns the patch energy after it. A node is visited only
+  // if some element round it changed since its last visit (all of them in the first
+  // sweep): converged regions of a large patch cost nothing.
+  double sweep() {
+    for (int i = 0; i < static_cast<int>(star_.size()); ++i) {
+      bool stale = visited_[i] < 0;
+      for (const Slot& s : star_[i]) stale = stale || changed_[s.element] > visited_[i];
+      if (!stale) continue;
+      visited_[i] = clock_;
+      move_node(i);
+    }
+    double E = 0;
+    for (double e : energy_) E += e;
+    return E;
+  }
+
+ private:
+  struct Slot {
+    int element;  // index into patch.elements
+    int node;     // node slot in the element
+  };
+
+  // The nodes of patch element le, in a buffer reused by every call.
+  const Eigen::Matrix2Xd& nodes(int le) const {
+    const int e = patch_.elements[le];
+    X_.resize(2, m_.tri.rows());
+    for (int k = 0; k < m_.tri.rows(); ++k) X_.col(k) = x_.col(m_.tri(k, e));
+    return X_;
+  }
+
+  double element_energy(int le, Eigen::Matrix2Xd* gradient) const {
+    return distortion_energy(nodes(le), tab_, target_[le], opt_.energy, gradient);
+  }
+
+  // Energy of node i's star and its gradient by the node's position.
+  double star_energy(int i, Eigen::Vector2d* g) const {
+    double E = 0;
+    if (g) g->setZero();
+    for (const Slot& s : star_[i]) {
+      E += element_energy(s.element, g ? &grad_ : nullptr);
+      if (!std::isfinite(E)) return E;
+      if (g) *g += grad_.col(s.node);
+    }
+    return E;
+  }
+
+  // Every element round node i certified valid with minJ/maxJ >= floor_.
+  bool star_certified(int i) const {
+    for (const Slot& s : star_[i]) {
+      const JacobianBounds b = jacobian_bounds(nodes(s.element), m_.order, opt_.bounds);
+      if (!b.valid_certified || scaled_jacobian_ratio(b) < floor_) return false;
+    }
+    return true;
+  }
+
+  // Length scales of node i's star: the smallest height and the longest edge of the
+  // straight triangles through its elements' corners.
+  std::pair<double, double> star_lengths(int i) const {
+    double height = std::numeric_limits<double>::infinity(), longest = 0;
+    for (const Slot& s : star_[i]) {
+      const int e = patch_.elements[s.element];
+      const Eigen::Vector2d a = x_.col(m_.tri(0, e)), b = x_.col(m_.tri(1, e)),
+                            c = x_.col(m_.tri(2, e));
+      const double edge = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+      const double area2 = std::abs((b - a)(0) * (c - a)(1) - (b - a)(1) * (c - a)(0));
+      height = std::min(height, area2 / edge);
+      longest = std::max(longest, edge);
+    }
+    return {height, longest};
+  }
+
+  // A modified Newton step on node i, backtracked; the node stays if nothing lowers
+  // the energy with every element round it certified valid and no worse than the
+  // patch's worst at the start (so a patch is reverted only by rounding).
+  void move_node(int i) {
+    const int node = patch_.free_nodes[i];
+    const Eigen::Vector2d x0 = x_.col(node);
+    Eigen::Vector2d g;
+    const double E0 = star_energy(i, &g);
+    if (!std::isfinite(E0) || g.squaredNorm() == 0) return;
+    const auto [height, longest] = star_lengths(i);
+    // Hessian by forward differences of the analytic gradient.
+    const double h = 1e-6 * height;
+    Eigen::Matrix2d H;
+    for (int c = 0; c < 2; ++c) {
+      x_.col(node) = x0;
+      x_(c, node) += h;
+      Eigen::Vector2d gc;
+      const double Ec = star_energy(i, &gc);
+      H.col(c) = std::isfinite(Ec) ? Eigen::Vector2d((gc - g) / h) : Eigen::Vector2d::Zero();
+    }
+    x_.col(node) = x0;
+    H = 0.5 * (H + H.transpose()).eval();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(H);
+    const Eigen::Vector2d lambda = eig.eigenvalues();
+    Eigen::Vector2d dir;
+    if (lambda(1) > 0) {
+      const double floor = 1e-6 * lambda(1);
+      const Eigen::Vector2d clamped = lambda.cwiseMax(floor);
+      dir = -eig.eigenvectors() * (eig.eigenvectors().transpose() * g).cwiseQuotient(clamped);
+    } else {
+      dir = -g.normalized() * height;
+    }
+    const double cap = 0.5 * longest;
+    if (dir.norm() > cap) dir *= cap / dir.norm();
+    const double slope = g.dot(dir);
+    double t = 1;
+    for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
+      x_.col(node) = x0 + t * dir;
+      const double E = star_energy(i, nullptr);
+      if (std::isfinite(E) && E < E0 + kArmijo * t * slope && star_certified(i)) {
+        // Moves that lower the star's energy by less than kNegligible of it do not
+        // wake the neighbours.
+        const bool moved = E0 - E > kNegligible * E0;
+        if (moved) ++clock_;
+        for (const Slot& s : star_[i]) {
+          energy_[s.element] = element_energy(s.element, nullptr);
+          if (moved) changed_[s.element] = clock_;
+        }
+        return;
+      }
+    }
+    x_.col(node) = x0;
+  }
+
+  const Mesh& m_;
+  Eigen::Matrix2Xd& x_;
+  const OptimisationPatch& patch_;
+  const ElementTabulation& tab_;
+  const OptimiseOptions& opt_;
+  double floor_;
+  std::vector<Eigen::Matrix2d> target_;
+  std::vector<double> energy_;
+  std::vector<std::vector<Slot>> star_;
+  mutable Eigen::Matrix2Xd X_, grad_;  // buffers of nodes() and star_energy()
+  // Move clock: changed_[element] is the clock of the last move in it, visited_[node]
+  // the clock at the node's last visit (-1: never).
+  long clock_ = 0;
+  std::vector<long> changed_, visited_;
+};
+
+// Certified minJ/maxJ of triangle e with nodes at x; -infinity unless certified valid.
+double certified_ratio(const Mesh& m, const Eigen::Matrix2Xd& x, int e, const BoundsOptions& b) {
+  Eigen::Matrix2Xd X(2, m.tri.rows());
+  for (int k = 0; k < m.tri.rows(); ++k) X.col(k) = x.col(m.tri(k, e));
+  const JacobianBounds jb = jacobian_bounds(X, m.order, b);
+  return jb.valid_certified ? scaled_jacobian_ratio(jb) : -std::numeric_limits<double>::infinity();
+}
+
+struct PatchOutcome {
+  bool accepted = false;
+  int sweeps = 0;
+  double energy_before = 0, energy_after = 0;
+};
+
+}  // namespace
+
+OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
+                             const OptimiseOptions& opt) {
+  if (static_cast<int>(fixed.size()) != m.num_nodes())
+    throw Error("optimise_mesh: fixed has " + std::to_string(fixed.size()) + " entries for " +
+                std::to_string(m.num_nodes()) + " nodes");
+  if (m.order < 2) throw Error("optimise_mesh: the mesh must be of order 2 or more");
+  if (opt.layers < 0 || opt.max_sweeps < 0 || !(opt.tolerance >= 0) ||
+      !(opt.energy.r >= 1) || !(opt.energy.alpha >= 0) || !(opt.energy.epsilon >= 0 &&
+      opt.energy.epsilon < 1))
+    throw Error("optimise_mesh: bad options (layers, max_sweeps >= 0, tolerance >= 0, r >= 1, "
+                "alpha >= 0, 0 <= epsilon < 1)");
+
+  OptimiseResult res;
+  res.mesh = m;
+  const MeshValidity before = mesh_validity(m, opt.bounds);
+  Eigen::VectorXd ratio = before.ratio;
+  std::vector<bool> valid(m.num_triangles()), poor(m.num_triangles());
+  for (int e = 0; e < m.num_triangles(); ++e) {
+    valid[e] = before.min_det(e) > 0;
+    poor[e] = valid[e] && ratio(e) < opt.threshold;
+    res.poor_before += poor[e];
+  }
+  res.invalid = before.invalid;
+  res.worst_before = before.worst;
+
+  // Held: the caller's nodes, every node of an element not certified valid (no
+  // untangling: the barrier needs a valid start; such an element ends up in no patch,
+  // and the patches round it still move), and the vertices unless free_vertices.
+  std::vector<bool> held = fixed;
+  for (int e = 0; e < m.num_triangles(); ++e)
+    if (!valid[e])
+      for (int k = 0; k < m.tri.rows(); ++k) held[m.tri(k, e)] = true;
+  if (!opt.free_vertices) {
+    const std::vector<bool> vertex = vertex_nodes(m);
+    for (int i = 0; i < m.num_nodes(); ++i) held[i] = held[i] || vertex[i];
+  }
+  const std::vector<OptimisationPatch> patches = optimisation_patches(m, poor, opt.layers, held);
+  res.patches = static_cast<int>(patches.size());
+  const ElementTabulation tab =
+      tabulate_element(m.order, opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order);
+
+  Eigen::Matrix2Xd& x = res.mesh.x;
+  std::vector<PatchOutcome> outcome(patches.size());
+  const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+  for (int k = 0; k < static_cast<int>(patches.size()); ++k) {
+    const OptimisationPatch& patch = patches[k];
+    double worst = std::numeric_limits<double>::infinity();
+    bool all_valid = true;
+    for (int e : patch.elements) {
+      all_valid = all_valid && valid[e];
+      worst = std::min(worst, ratio(e));
+    }
+    if (!all_valid) continue;  // cannot happen (their nodes are held), kept as a guard
+    Eigen::Matrix2Xd start(2, patch.free_nodes.size());
+    for (int i = 0; i < start.cols(); ++i) start.col(i) = x.col(patch.free_nodes[i]);
+    PatchOptimiser po(m, x, patch, tab, opt, worst);
+    PatchOutcome& o = outcome[k];
+    double E = o.energy_before = po.total_energy();
+    while (o.sweeps < opt.max_sweeps) {
+      const double next = po.sweep();
+      ++o.sweeps;
+      const bool done = !(E - next > opt.tolerance * E);
+      E = next;
+      if (done) break;
+    }
+    o.energy_after = E;
+    // Certificate: every element valid and the patch's worst minJ/maxJ not lowered.
+    std::vector<double> after(patch.elements.size());
+    double worst_after = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < patch.elements.size(); ++j) {
+      after[j] = certified_ratio(m, x, patch.elements[j], opt.bounds);
+      worst_after = std::min(worst_after, after[j]);
+    }
+    o.accepted = worst_after >= worst;
+    if (o.accepted) {
+      for (std::size_t j = 0; j < patch.elements.size(); ++j) ratio(patch.elements[j]) = after[j];
+    } else {
+      for (int i = 0; i < start.cols(); ++i) x.col(patch.free_nodes[i]) = start.col(i);
+    }
+  }
+
+  for (std::size_t k = 0; k < patches.size(); ++k) {
+    const PatchOutcome& o = outcome[k];
+    res.sweeps += o.sweeps;
+    if (!o.accepted) continue;
+    ++res.accepted;
+    res.moved_nodes += static_cast<int>(patches[k].free_nodes.size());
+    res.energy_before += o.energy_before;
+    res.energy_after += o.energy_after;
+  }
+  res.worst_after = m.num_triangles() > 0 ? ratio.minCoeff() : 1.0;
+  for (int e = 0; e < m.num_triangles(); ++e) res.poor_after += valid[e] && ratio(e) < opt.threshold;
+  return res;
+}
+
+}  // namespace homesh

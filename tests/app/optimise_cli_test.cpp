@@ -1,0 +1,54 @@
+// The optimise stage run as a user does, after layers and curve on NACA-7526: the log's
+// numbers, the certified validity that follows, and a bad option refused.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <regex>
+#include <string>
+
+#include "../support/run_command.h"
+
+using homesh::test::run_homesh;
+
+namespace {
+const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+}
+
+// The main job's mesh (scripts/naca7526.sh) at p = 3: curve leaves no element below the
+// default threshold 0.8 (worst 0.9918), so the stage is asked for 0.999: one patch of
+// 435 poor elements, worst 0.9918 -> 0.9936 (measured, 2 s on 2 busy cores).
+TEST_CASE("optimise: NACA-7526 with boundary layers at p = 3, worst element better", "[app]") {
+  const std::string out = "/tmp/homesh_optimise_naca.msh";
+  const auto r = run_homesh(
+      geo + "naca.geo -m mesh "
+            "-m layers:walls=aerofoil:n=15:first=1e-3:ratio=1.2:normals=multi:fan=5:fan_angle=320 "
+            "-m curve:p=3 -m optimise:threshold=0.999 -m quality " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(
+      r.output, m,
+      std::regex(R"(optimise: (\d+) patches around (\d+) elements below minJ/maxJ \S+, (\d+) kept, )"
+                 R"(\d+ sweeps: worst minJ/maxJ (\d\.\d+) -> (\d\.\d+), (\d+) below, (\S+) s)")));
+  const int patches = std::stoi(m[1]), kept = std::stoi(m[3]);
+  const double before = std::stod(m[4]), after = std::stod(m[5]);
+  CHECK(patches > 0);
+  CHECK(kept > 0);
+  CHECK(before > 0.99);
+  CHECK(after > before + 0.001);
+  std::smatch q;
+  REQUIRE(std::regex_search(
+      r.output, q,
+      std::regex(R"(validity: 0 invalid of \d+ triangles.*worst minJ/maxJ (\d\.\d+))")));
+  CHECK(std::stod(q[1]) == Approx(after).margin(1e-4));
+  std::remove(out.c_str());
+  std::remove((out + ".opt").c_str());
+}
+
+TEST_CASE("optimise: a linear mesh and bad options are refused", "[app]") {
+  auto r = run_homesh(geo + "naca.geo -m mesh -m optimise");
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("the mesh is linear") != std::string::npos);
+  r = run_homesh(geo + "naca.geo -m mesh -m curve -m optimise:threshold=2");
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("threshold = 2 must be in (0, 1]") != std::string::npos);
+}
