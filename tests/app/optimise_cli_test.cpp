@@ -50,5 +50,6 @@ TEST_CASE("optimise: a linear mesh and bad options are refused", "[app]") {
   CHECK(r.output.find("the mesh is linear") != std::string::npos);
   r = run_homesh(geo + "naca.geo -m mesh -m curve -m optimise:threshold=2");
   CHECK(r.exit_code != 0);
-  CHECK(r.output.find("threshold = 2 must be in (0, 1]") != std::string::npos);
+  CHECK(r.output.find("stage 'optimise': option threshold=2: out of range (0, 1]") !=
+        std::string::npos);
 }

@@ -96,6 +96,9 @@ TEST_CASE("optimise: a thin curved layer's bulge is spread into the elements abo
     const std::vector<bool> vertex = vertex_nodes(m);
     for (int i = 0; i < m.num_nodes(); ++i) held[i] = held[i] || vertex[i];
     DeformOptions d;
+    d.formulation = "plain";
+    d.params.poisson = 0.4;
+    d.reach = 0;
     d.increments = 1;
     const DeformResult curved = deform_mesh(m, target, held, d);
     REQUIRE(curved.complete);
