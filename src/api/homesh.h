@@ -38,10 +38,10 @@ using ResultValue = std::variant<bool, int, double>;
 /// determinant; quality/mesh_validity.h).
 struct Validity {
   int triangles = 0;
-  int invalid = 0;          ///< triangles not certified valid
-  double worst = 1;         ///< smallest certified minJ/maxJ, in [-1, 1]
-  int worst_triangle = 0;   ///< the Gmsh element tag of the triangle of `worst`
-  std::string line;         ///< the CLI's one-line summary ("validity: ...")
+  int invalid = 0;         ///< triangles not certified valid
+  double worst = 1;        ///< smallest certified minJ/maxJ, in [-1, 1]
+  int worst_triangle = 0;  ///< the Gmsh element tag of the triangle of `worst`
+  std::string line;        ///< the CLI's one-line summary ("validity: ...")
 };
 
 /// What a stage did to the current model.
@@ -51,8 +51,8 @@ struct Result {
   /// names are the names throughout: quality reports triangles, invalid,
   /// worst and worst_triangle; rotate the worst minJ/maxJ of its steps as worst.
   std::map<std::string, ResultValue> results;
-  bool has_mesh = false;   ///< the model holds a mesh after the stage
-  int order = 0;           ///< element order of that mesh
+  bool has_mesh = false;  ///< the model holds a mesh after the stage
+  int order = 0;          ///< element order of that mesh
   int nodes = 0;
   int triangles = 0;
   std::vector<int> views;  ///< tags of the Gmsh views the stage added

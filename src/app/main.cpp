@@ -1,11 +1,11 @@
 // homesh command line: homesh INPUT [-m STAGE[:key=value...]]... [OUTPUT]
+#include <fmt/core.h>
 #include <gmsh.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <fmt/core.h>
 #include <csignal>
 #include <cstdio>
-#include <unistd.h>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -50,8 +50,8 @@ int run(int argc, char** argv) {
   app.add_option("OUTPUT", output, "the .msh to write (none: nothing is written)");
   app.add_option("-m,--module", modules, "stage to run, as name:key=value:... (repeatable)")
       ->allow_extra_args(false);
-  auto* help = app.add_option("-h,--help", help_stage, "this help, or a stage's options")
-                   ->expected(0, 1);
+  auto* help =
+      app.add_option("-h,--help", help_stage, "this help, or a stage's options")->expected(0, 1);
   app.add_flag("--list", list, "list the stages");
   app.add_flag("--measures", list_measures, "list the quality measures");
   app.add_flag("--keep-invalid", keep_invalid,
@@ -100,8 +100,9 @@ int run(int argc, char** argv) {
   }
   if (list_measures) {
     for (const auto& q : homesh::measures())
-      std::fputs(fmt::format("  {:<4} {:<28} {}   [{}]\n", q.name, q.title, q.formula, q.source).c_str(),
-                 stdout);
+      std::fputs(
+          fmt::format("  {:<4} {:<28} {}   [{}]\n", q.name, q.title, q.formula, q.source).c_str(),
+          stdout);
     return 0;
   }
   if (input.empty()) throw CLI::RequiredError("INPUT");
@@ -159,8 +160,9 @@ int main(int argc, char** argv) {
   } catch (const std::string& e) {
     std::fprintf(stderr, "homesh: error: Gmsh: %s\n", e.c_str());
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "homesh: error: out of memory (the input or an option asks for more "
-                         "than this machine has)\n");
+    std::fprintf(stderr,
+                 "homesh: error: out of memory (the input or an option asks for more "
+                 "than this machine has)\n");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "homesh: error: %s\n", e.what());
   }

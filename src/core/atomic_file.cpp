@@ -60,7 +60,8 @@ PathParts split(const std::string& path) {
 }
 
 std::string message(const std::string& target, const std::string& what, int err) {
-  return "cannot write '" + target + "': " + what + (err ? ": " + std::string(std::strerror(err)) : "");
+  return "cannot write '" + target + "': " + what +
+         (err ? ": " + std::string(std::strerror(err)) : "");
 }
 
 // The writer's process id in a temporary file name `.BASE.tmpPID[_N]EXT`, or
@@ -132,9 +133,10 @@ AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
   }
   add_pending(temp_.c_str());
   // The new file keeps the permissions of the one it replaces.
-  const char* failed = flock(fd_, LOCK_EX) != 0                                   ? "lock"
-                       : replaces && fchmod(fd_, old.st_mode & 07777) != 0 ? "set the permissions of"
-                                                                           : nullptr;
+  const char* failed = flock(fd_, LOCK_EX) != 0 ? "lock"
+                       : replaces && fchmod(fd_, old.st_mode & 07777) != 0
+                           ? "set the permissions of"
+                           : nullptr;
   if (failed) {
     const int err = errno;
     unlink(temp_.c_str());

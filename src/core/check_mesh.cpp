@@ -60,8 +60,8 @@ void check_mesh(const Mesh& m, const std::string& source) {
     std::array<int, 3> c = {m.tri(0, e), m.tri(1, e), m.tri(2, e)};
     const Eigen::Vector2d a = m.x.col(c[0]), b = m.x.col(c[1]), d = m.x.col(c[2]);
     const double area2 = (b - a).x() * (d - a).y() - (b - a).y() * (d - a).x();
-    const double scale = std::max({(b - a).squaredNorm(), (d - a).squaredNorm(),
-                                   (d - b).squaredNorm()});
+    const double scale =
+        std::max({(b - a).squaredNorm(), (d - a).squaredNorm(), (d - b).squaredNorm()});
     if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2])
       throw Error(source + ": " + where(m, e) + " repeats a corner node");
     if (std::abs(area2) <= 1e-12 * scale)

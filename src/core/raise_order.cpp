@@ -102,10 +102,10 @@ Mesh raise_order(const Mesh& m, int p) {
   }
 
   // Node table: kept corners, then edge nodes, then interior nodes.
-  const int num_corners = static_cast<int>(std::count_if(
-      renumber.begin(), renumber.end(), [](int n) { return n >= 0; }));
-  const int num_nodes = num_corners + per_edge * static_cast<int>(edges.size()) +
-                        per_interior * m.num_triangles();
+  const int num_corners = static_cast<int>(
+      std::count_if(renumber.begin(), renumber.end(), [](int n) { return n >= 0; }));
+  const int num_nodes =
+      num_corners + per_edge * static_cast<int>(edges.size()) + per_interior * m.num_triangles();
   r.x.resize(2, num_nodes);
   r.node_class.resize(num_nodes);
   for (int n = 0; n < m.num_nodes(); ++n) {

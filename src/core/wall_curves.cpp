@@ -16,7 +16,8 @@ bool is_number(const std::string& s) {
 std::vector<int> group_curves(const Mesh& m, const std::string& w) {
   std::vector<int> curves;
   for (const PhysicalGroup& g : m.physicals)
-    if (g.dim == 1 && g.name == w) curves.insert(curves.end(), g.entities.begin(), g.entities.end());
+    if (g.dim == 1 && g.name == w)
+      curves.insert(curves.end(), g.entities.begin(), g.entities.end());
   if (!curves.empty() || !is_number(w)) return curves;
   for (const PhysicalGroup& g : m.physicals)
     if (g.dim == 1 && g.tag == std::stoi(w))
@@ -35,7 +36,8 @@ bool is_curve(const Mesh& m, int tag) {
 std::vector<int> wall_curves(const Mesh& m, const std::vector<std::string>& walls,
                              const std::string& context) {
   if (walls.empty())
-    throw Error(context + ": no walls given (curve physical group names or numbers, or curve tags)");
+    throw Error(context +
+                ": no walls given (curve physical group names or numbers, or curve tags)");
   std::vector<int> curves;
   for (const std::string& w : walls) {
     const std::vector<int> group = group_curves(m, w);

@@ -29,7 +29,9 @@ ElasticityCoefficients base(const FormulationParams& p) {
 }
 
 // Case 1: E = 1, no added terms.
-ElasticityCoefficients plain(const Mesh&, const Mesh&, const FormulationParams& p) { return base(p); }
+ElasticityCoefficients plain(const Mesh&, const Mesh&, const FormulationParams& p) {
+  return base(p);
+}
 
 // Case 2: E = 1 / Ae (Palmerio's stiffening of small elements).
 ElasticityCoefficients area(const Mesh& m, const Mesh&, const FormulationParams& p) {
@@ -90,7 +92,8 @@ Eigen::Matrix2d scaled_metric(const Eigen::Matrix2d& F) {
 // The tabulation at the rule the assembly uses (coefficients are read at its
 // points by QuadraturePoint::index).
 ElementTabulation assembly_tabulation(const Mesh& m, const FormulationParams& p) {
-  return tabulate_element(m.order, stiffness_quadrature_degree(m.order, p.assembly.quadrature_margin));
+  return tabulate_element(m.order,
+                          stiffness_quadrature_degree(m.order, p.assembly.quadrature_margin));
 }
 
 // The reference->physical Jacobian J of every element of m at every point of
@@ -129,14 +132,16 @@ ElasticityCoefficients metric(const Mesh& m, const Mesh& initial, const Formulat
 ElasticityCoefficients metric_ref(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
   return metric(m, initial, p, false);
 }
-ElasticityCoefficients metric_ideal(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
+ElasticityCoefficients metric_ideal(const Mesh& m, const Mesh& initial,
+                                    const FormulationParams& p) {
   return metric(m, initial, p, true);
 }
 
 // Case 8: E = (min Q17 / max Q17)^-power (power 1 in the thesis), no added terms.
 ElasticityCoefficients stiff_q17(const Mesh& m, const Mesh&, const FormulationParams& p) {
   ElasticityCoefficients c = base(p);
-  c.young = per_element(inverse_ratio(element_distortion(m).q17_ratio).array().pow(p.power).matrix());
+  c.young =
+      per_element(inverse_ratio(element_distortion(m).q17_ratio).array().pow(p.power).matrix());
   return c;
 }
 
@@ -189,7 +194,8 @@ ElasticityCoefficients stiff_shear(const Mesh& m, const Mesh& initial, const For
   for (std::size_t i = 0; i < J.size(); ++i) {
     const Eigen::Matrix2d F = J[i] * J0[i].inverse();
     const double q = F.determinant() > 0 ? condition_number_quality(F) : 0.0;
-    const double mu = lame0.mu * std::pow(std::max(ratio(Eigen::Index(i) / nq) * q, 1e-4), -p.power);
+    const double mu =
+        lame0.mu * std::pow(std::max(ratio(Eigen::Index(i) / nq) * q, 1e-4), -p.power);
     young[i] = mu * (3 * lambda + 2 * mu) / (lambda + mu);
     poisson[i] = lambda / (2 * (lambda + mu));
   }
@@ -215,7 +221,8 @@ const std::vector<AnalogyFormulation>& analogy_formulations() {
        metric_ref},
       {"metric_ideal", "case 7: E = 1, sigma_t ~ R^T Lambda R of the ideal->physical map",
        metric_ideal},
-      {"stiff_q17", "case 8: E = (min Q17/max Q17)^-power (thesis: power 1), no added terms", stiff_q17},
+      {"stiff_q17", "case 8: E = (min Q17/max Q17)^-power (thesis: power 1), no added terms",
+       stiff_q17},
       {"heat_area", "Section 4.4.2: E = 1, T = 1/Ae", heat_area},
       {"stiff_shape", "homesh: E = (min Q11 / initial min Q11)^-power, shear-aware stiffening",
        stiff_shape},

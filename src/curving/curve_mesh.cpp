@@ -4,8 +4,7 @@
 
 namespace homesh {
 
-CurveResult curve_mesh(const Mesh& m,
-                       const std::function<Eigen::Matrix2Xd(Mesh& raised)>& place,
+CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh& raised)>& place,
                        const CurveOptions& opt) {
   Mesh raised = raise_order(m, opt.order);
   Eigen::Matrix2Xd target = place(raised);

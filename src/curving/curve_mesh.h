@@ -19,16 +19,16 @@
 namespace homesh {
 
 struct CurveOptions {
-  int order = 2;                ///< p, 2 to kMaxOrder
-  bool fixed_vertices = true;   ///< hold the linear mesh's interior vertices (see above)
-  DeformOptions deform;         ///< the analogy; its defaults are the curve stage's
+  int order = 2;               ///< p, 2 to kMaxOrder
+  bool fixed_vertices = true;  ///< hold the linear mesh's interior vertices (see above)
+  DeformOptions deform;        ///< the analogy; its defaults are the curve stage's
   /// Without CAD: how the boundary curves are rebuilt (used by the caller's `place`).
   BoundaryReconstructionOptions boundary;
 };
 
 struct CurveResult {
-  DeformResult deform;      ///< of the last solve
-  bool fell_back = false;   ///< the restricted solve fell short: the whole mesh was solved
+  DeformResult deform;            ///< of the last solve
+  bool fell_back = false;         ///< the restricted solve fell short: the whole mesh was solved
   double restricted_reached = 0;  ///< the restricted solve's reached fraction, if it fell back
 };
 
@@ -37,8 +37,7 @@ struct CurveResult {
 /// `place` may update the raised mesh's node classification, e.g. curve parameters)
 /// and its interior by the analogy. result.deform.complete says whether the
 /// whole motion was reached with every element valid. Throws as deform_mesh.
-CurveResult curve_mesh(const Mesh& m,
-                       const std::function<Eigen::Matrix2Xd(Mesh& raised)>& place,
+CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh& raised)>& place,
                        const CurveOptions& opt = {});
 
 }  // namespace homesh

@@ -92,10 +92,9 @@ namespace {
 DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
                            const std::vector<bool>& prescribed, const DeformOptions& opt) {
   std::vector<bool> moving(m.num_nodes());
-  for (int i = 0; i < m.num_nodes(); ++i)
-    moving[i] = prescribed[i] && target.col(i) != m.x.col(i);
-  const std::vector<int> region = opt.layers > 0 ? moving_region(m, moving, opt.layers)
-                                                 : reach_region(m, moving, opt.reach);
+  for (int i = 0; i < m.num_nodes(); ++i) moving[i] = prescribed[i] && target.col(i) != m.x.col(i);
+  const std::vector<int> region =
+      opt.layers > 0 ? moving_region(m, moving, opt.layers) : reach_region(m, moving, opt.reach);
   if (region.empty()) return {m, 1.0, true, 0, 0, mesh_validity(m).worst, 0, 0};
   std::vector<bool> inside(m.num_triangles(), false), outside_node(m.num_nodes(), false);
   for (int e : region) inside[e] = true;
@@ -133,7 +132,8 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
   const DeformResult s = deform_mesh(sub, sub_target, sub_prescribed, whole);
   DeformResult r = s;
   r.mesh = m;
-  for (std::size_t k = 0; k < global.size(); ++k) r.mesh.x.col(global[k]) = s.mesh.x.col(Eigen::Index(k));
+  for (std::size_t k = 0; k < global.size(); ++k)
+    r.mesh.x.col(global[k]) = s.mesh.x.col(Eigen::Index(k));
   r.worst_ratio = mesh_validity(r.mesh).worst;
   r.solved_triangles = int(region.size());
   return r;
@@ -143,7 +143,8 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
 
 DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
                          const std::vector<bool>& prescribed, const DeformOptions& opt) {
-  if (target.cols() != m.num_nodes() || prescribed.size() != static_cast<std::size_t>(m.num_nodes()))
+  if (target.cols() != m.num_nodes() ||
+      prescribed.size() != static_cast<std::size_t>(m.num_nodes()))
     throw Error("deform_mesh: target and prescribed must have one entry per node");
   if (opt.increments < 1) throw Error("deform_mesh: increments must be >= 1");
   if (opt.layers < 0) throw Error("deform_mesh: layers must be >= 0");

@@ -32,7 +32,7 @@ namespace homesh {
 // one; 1/Ae makes the small elements stiff as well.
 struct DeformOptions {
   std::string formulation = "area";  ///< a name of analogy_formulations()
-  FormulationParams params = [] {  // nu = 0.49, the other parameters as FormulationParams
+  FormulationParams params = [] {    // nu = 0.49, the other parameters as FormulationParams
     FormulationParams p;
     p.poisson = 0.49;
     return p;
@@ -56,12 +56,12 @@ struct DeformOptions {
 };
 
 struct DeformResult {
-  Mesh mesh;               ///< the last certified-valid state
-  double reached = 0;      ///< fraction of the prescribed motion applied, in [0, 1]
-  bool complete = false;   ///< reached == 1 with every element certified valid
-  int solves = 0;          ///< elasticity solves (including rejected increments)
-  int iterations = 0;      ///< total CG iterations (0 for direct solvers)
-  double worst_ratio = 1;  ///< worst certified minJ/maxJ of the result
+  Mesh mesh;                   ///< the last certified-valid state
+  double reached = 0;          ///< fraction of the prescribed motion applied, in [0, 1]
+  bool complete = false;       ///< reached == 1 with every element certified valid
+  int solves = 0;              ///< elasticity solves (including rejected increments)
+  int iterations = 0;          ///< total CG iterations (0 for direct solvers)
+  double worst_ratio = 1;      ///< worst certified minJ/maxJ of the result
   int invalid_at_failure = 0;  ///< invalid elements of the first rejected state, if it failed
   int solved_triangles = 0;    ///< triangles the elasticity was posed on (layers, reach)
 };

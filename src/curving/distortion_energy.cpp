@@ -1,7 +1,6 @@
 #include "curving/distortion_energy.h"
 
 #include <Eigen/LU>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>

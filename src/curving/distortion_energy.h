@@ -34,7 +34,7 @@
 namespace homesh {
 
 struct DistortionEnergyOptions {
-  double r = 2.0;      ///< exponent of Eq 3.48 (the thesis' r = 2); >= 2 keeps the barrier
+  double r = 2.0;  ///< exponent of Eq 3.48 (the thesis' r = 2); >= 2 keeps the barrier
   /// Weight of Theta_size against Theta_shape (0: shape only). Measured on the
   /// thin annulus of tests/curving/optimise_mesh_test.cpp with 16 wall segments (p = 2, start
   /// 0.886, straight target): alpha = 0, 1, 10, 30, 100, 1000 give a worst

@@ -229,11 +229,11 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     throw Error("optimise_mesh: fixed has " + std::to_string(fixed.size()) + " entries for " +
                 std::to_string(m.num_nodes()) + " nodes");
   if (m.order < 2) throw Error("optimise_mesh: the mesh must be of order 2 or more");
-  if (opt.layers < 0 || opt.max_sweeps < 0 || !(opt.tolerance >= 0) ||
-      !(opt.energy.r >= 1) || !(opt.energy.alpha >= 0) || !(opt.energy.epsilon >= 0 &&
-      opt.energy.epsilon < 1))
-    throw Error("optimise_mesh: bad options (layers, max_sweeps >= 0, tolerance >= 0, r >= 1, "
-                "alpha >= 0, 0 <= epsilon < 1)");
+  if (opt.layers < 0 || opt.max_sweeps < 0 || !(opt.tolerance >= 0) || !(opt.energy.r >= 1) ||
+      !(opt.energy.alpha >= 0) || !(opt.energy.epsilon >= 0 && opt.energy.epsilon < 1))
+    throw Error(
+        "optimise_mesh: bad options (layers, max_sweeps >= 0, tolerance >= 0, r >= 1, "
+        "alpha >= 0, 0 <= epsilon < 1)");
 
   OptimiseResult res;
   res.mesh = m;
@@ -315,7 +315,8 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     res.energy_after += o.energy_after;
   }
   res.worst_after = m.num_triangles() > 0 ? ratio.minCoeff() : 1.0;
-  for (int e = 0; e < m.num_triangles(); ++e) res.poor_after += valid[e] && ratio(e) < opt.threshold;
+  for (int e = 0; e < m.num_triangles(); ++e)
+    res.poor_after += valid[e] && ratio(e) < opt.threshold;
   return res;
 }
 

@@ -70,17 +70,17 @@ struct OptimiseOptions {
 };
 
 struct OptimiseResult {
-  Mesh mesh;                  ///< the optimised mesh (nodes moved, nothing else changed)
-  double worst_before = 1;    ///< worst certified minJ/maxJ of the input
-  double worst_after = 1;     ///< of the result
-  int poor_before = 0;        ///< elements below the threshold (valid ones)
+  Mesh mesh;                ///< the optimised mesh (nodes moved, nothing else changed)
+  double worst_before = 1;  ///< worst certified minJ/maxJ of the input
+  double worst_after = 1;   ///< of the result
+  int poor_before = 0;      ///< elements below the threshold (valid ones)
   int poor_after = 0;
-  int invalid = 0;            ///< elements of the input not certified valid (left alone)
-  int patches = 0;            ///< patches optimised
-  int accepted = 0;           ///< patches kept (the others were reverted or skipped)
-  int sweeps = 0;             ///< node-by-node sweeps over all patches
-  int moved_nodes = 0;        ///< free nodes of the kept patches
-  double energy_before = 0;   ///< summed energy of the kept patches, before and after
+  int invalid = 0;           ///< elements of the input not certified valid (left alone)
+  int patches = 0;           ///< patches optimised
+  int accepted = 0;          ///< patches kept (the others were reverted or skipped)
+  int sweeps = 0;            ///< node-by-node sweeps over all patches
+  int moved_nodes = 0;       ///< free nodes of the kept patches
+  double energy_before = 0;  ///< summed energy of the kept patches, before and after
   double energy_after = 0;
 };
 

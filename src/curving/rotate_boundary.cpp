@@ -3,9 +3,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/progress.h"
@@ -40,8 +40,7 @@ void check(const Mesh& m, const std::vector<bool>& wall, const std::vector<bool>
     throw Error("rotate_boundary: max_angle must be finite and >= 0");
   // A cap instead of a run of a billion steps (step=1e-9).
   const double steps = opt.max_angle / std::abs(opt.step);
-  if (steps > kMaxRotationSteps)
-  {
+  if (steps > kMaxRotationSteps) {
     std::ostringstream s;
     s << "rotate_boundary: turning to " << opt.max_angle << " degrees by " << std::abs(opt.step)
       << " would take " << steps << " steps; at most " << kMaxRotationSteps
@@ -80,8 +79,7 @@ RotateResult rotate_boundary(const Mesh& m, const std::vector<bool>& wall,
   Mesh current = m;
   Eigen::Matrix2Xd guess;
   long iterations = 0;
-  const int max_steps =
-      static_cast<int>(std::floor(opt.max_angle / std::abs(opt.step) + 1e-9));
+  const int max_steps = static_cast<int>(std::floor(opt.max_angle / std::abs(opt.step) + 1e-9));
   const int solves_per_step = opt.total ? 1 : opt.substeps;
   bool failed = false;
   Progress progress("step", max_steps);

@@ -42,10 +42,10 @@ struct RotateOptions {
   /// Centre of the rotation; none: the centre of the circle fitted to the
   /// wall's nodes (fitted_circle_centre), the hole's centre in the thesis.
   std::optional<Eigen::Vector2d> centre;
-  double step = 1.0;       ///< angle step h, degrees (its sign gives the sense)
-  double max_angle = 360;  ///< stop once |angle| reaches it, degrees
-  int substeps = 1;        ///< solves per step (incremental only)
-  bool total = false;      ///< pose each step on the initial mesh (see above)
+  double step = 1.0;                  ///< angle step h, degrees (its sign gives the sense)
+  double max_angle = 360;             ///< stop once |angle| reaches it, degrees
+  int substeps = 1;                   ///< solves per step (incremental only)
+  bool total = false;                 ///< pose each step on the initial mesh (see above)
   std::string formulation = "plain";  ///< a name of analogy_formulations()
   FormulationParams params;
   LinearSolverOptions solver;
@@ -57,20 +57,20 @@ struct RotateResult {
   int steps = 0;             ///< accepted steps (theta_max / step)
   bool reached_max = false;  ///< max_angle reached without an invalid element
   int solves = 0;            ///< elasticity solves, the failing step's included
-  double mean_iterations = 0;  ///< CG iterations per attempted step (the thesis' N); 0 for direct solvers
-  double worst_ratio = 1;    ///< worst certified minJ/maxJ of m and every accepted step
+  double mean_iterations =
+      0;  ///< CG iterations per attempted step (the thesis' N); 0 for direct solvers
+  double worst_ratio = 1;      ///< worst certified minJ/maxJ of m and every accepted step
   int invalid_at_failure = 0;  ///< invalid elements of the first rejected state
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< the centre used
 };
 
 /// Rotates the nodes with wall[i] about opt.centre (or the fitted one) step
 /// by step; nodes with prescribed[i] && !wall[i] stay where they are, the
-/// others follow the analogy. m must be certified valid; wall must be a subset of prescribed. The wall
-/// nodes of the result lose their curve parameter (u = NaN): it no longer
-/// matches their position. Throws homesh::Error on an invalid m, bad sizes, an empty wall,
-/// a wall node not prescribed, step = 0, max_angle < 0, substeps < 1, an
-/// unknown formulation, no opt.centre and wall nodes fitting no circle (fewer
-/// than 3, collinear), or a failed solve.
+/// others follow the analogy. m must be certified valid; wall must be a subset of prescribed. The
+/// wall nodes of the result lose their curve parameter (u = NaN): it no longer matches their
+/// position. Throws homesh::Error on an invalid m, bad sizes, an empty wall, a wall node not
+/// prescribed, step = 0, max_angle < 0, substeps < 1, an unknown formulation, no opt.centre and
+/// wall nodes fitting no circle (fewer than 3, collinear), or a failed solve.
 RotateResult rotate_boundary(const Mesh& m, const std::vector<bool>& wall,
                              const std::vector<bool>& prescribed, const RotateOptions& opt = {});
 

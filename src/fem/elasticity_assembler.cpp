@@ -272,8 +272,7 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
     }
   }
   if (failed_element >= 0)
-    throw Error("assemble_elasticity: triangle " + std::to_string(failed_element) + ": " +
-                failure);
+    throw Error("assemble_elasticity: triangle " + std::to_string(failed_element) + ": " + failure);
   for (int j = 0; j < num_dofs; ++j) {
     double& diagonal = value[outer[j]];
     if (!used_[j / 2] || (fixed_[j] && diagonal == 0.0)) diagonal = 1.0;

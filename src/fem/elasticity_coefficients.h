@@ -30,9 +30,9 @@ class Coefficient {
 
   Coefficient(const T& value) : value_(value) {}  // NOLINT(google-explicit-constructor)
   // (Values convertible to T are excluded first: Eigen's operator() is not SFINAE-friendly.)
-  template <class F, class = std::enable_if_t<std::conjunction_v<
-                         std::negation<std::is_convertible<F, T>>,
-                         std::is_invocable_r<T, F, const QuadraturePoint&>>>>
+  template <class F, class = std::enable_if_t<
+                         std::conjunction_v<std::negation<std::is_convertible<F, T>>,
+                                            std::is_invocable_r<T, F, const QuadraturePoint&>>>>
   Coefficient(F f) : function_(std::move(f)) {}  // NOLINT(google-explicit-constructor)
 
   T operator()(const QuadraturePoint& q) const { return function_ ? function_(q) : value_; }
@@ -68,12 +68,12 @@ ScalarCoefficient per_element(Eigen::VectorXd values);
 /// Sign: as in Eq 4.5 the thermal terms add to the stress, so a free body with
 /// uniform beta (T - T0) = s > 0 contracts: u = -s / (2 (lambda + mu)) (x - x0).
 struct ElasticityCoefficients {
-  ScalarCoefficient young{1.0};                        // E > 0
-  ScalarCoefficient poisson{0.4};                      // nu in (-1, 1/2); 0.4 as Sec 4.3
-  VectorCoefficient body_force{Eigen::Vector2d::Zero()};  // f
-  ScalarCoefficient beta{0.0};                         // thermal coefficient beta
-  ScalarCoefficient temperature{0.0};                  // T
-  double reference_temperature = 0.0;                  // T0, the stress-free state
+  ScalarCoefficient young{1.0};                                   // E > 0
+  ScalarCoefficient poisson{0.4};                                 // nu in (-1, 1/2); 0.4 as Sec 4.3
+  VectorCoefficient body_force{Eigen::Vector2d::Zero()};          // f
+  ScalarCoefficient beta{0.0};                                    // thermal coefficient beta
+  ScalarCoefficient temperature{0.0};                             // T
+  double reference_temperature = 0.0;                             // T0, the stress-free state
   TensorCoefficient anisotropic_stress{Eigen::Matrix2d::Zero()};  // S, symmetric
 };
 

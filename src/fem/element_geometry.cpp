@@ -39,8 +39,8 @@ void element_geometry(const Eigen::Matrix2Xd& X, const ElementTabulation& tab, E
     g.x.col(q) = X * tab.N.col(q);
   }
   if (!(det_min > 0.0) && !(det_max < 0.0))
-    throw Error("element_geometry: det J changes sign or vanishes (min " +
-                std::to_string(det_min) + ", max " + std::to_string(det_max) + ")");
+    throw Error("element_geometry: det J changes sign or vanishes (min " + std::to_string(det_min) +
+                ", max " + std::to_string(det_max) + ")");
 }
 
 }  // namespace homesh

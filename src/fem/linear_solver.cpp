@@ -64,8 +64,7 @@ struct Cg : Backend {
   LinearSolveResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) const override {
     const int limit =
         options.max_iterations > 0 ? options.max_iterations : static_cast<int>(b.size());
-    ConjugateGradientResult r =
-        conjugate_gradient(full, b, guess, M, options.tolerance, limit);
+    ConjugateGradientResult r = conjugate_gradient(full, b, guess, M, options.tolerance, limit);
     if (!r.converged)
       throw Error("solve_linear_system: cg with " + options.preconditioner +
                   " did not converge in " + std::to_string(r.iterations) +
@@ -79,10 +78,12 @@ using Factory = std::unique_ptr<Backend> (*)(const LinearSolverOptions&);
 // The one list of solvers: name and factory.
 const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> entries = {
-      {"cholmod", [](const LinearSolverOptions&) -> std::unique_ptr<Backend> {
+      {"cholmod",
+       [](const LinearSolverOptions&) -> std::unique_ptr<Backend> {
          return std::make_unique<Cholmod>();
        }},
-      {"ldlt", [](const LinearSolverOptions&) -> std::unique_ptr<Backend> {
+      {"ldlt",
+       [](const LinearSolverOptions&) -> std::unique_ptr<Backend> {
          return std::make_unique<Ldlt>();
        }},
       {"cg", [](const LinearSolverOptions& o) -> std::unique_ptr<Backend> {
@@ -147,7 +148,8 @@ void LinearSolver::factorize(const Matrix& K) {
   s.K = &K;
 }
 
-LinearSolveResult LinearSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) const {
+LinearSolveResult LinearSolver::solve(const Eigen::VectorXd& b,
+                                      const Eigen::VectorXd& guess) const {
   const State& s = *state_;
   if (!s.K) throw Error("solve_linear_system: nothing factorised");
   if (s.K->rows() != b.size())

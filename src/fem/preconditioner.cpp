@@ -14,9 +14,7 @@ Preconditioner jacobi(const Eigen::SparseMatrix<double>& K) {
   if (!(d.size() == 0 || d.minCoeff() > 0.0))
     throw Error("make_preconditioner: jacobi needs a positive diagonal");
   const Eigen::VectorXd inverse = d.cwiseInverse();
-  return [inverse](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-    z = inverse.cwiseProduct(r);
-  };
+  return [inverse](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = inverse.cwiseProduct(r); };
 }
 
 Preconditioner block_jacobi(const Eigen::SparseMatrix<double>& K) {

@@ -41,8 +41,8 @@ ElasticitySolution ElasticitySolver::finish(const Eigen::VectorXd& b,
 }
 
 ElasticitySolution ElasticitySolver::solve(const Eigen::Matrix2Xd& x,
-                                           const ElasticityCoefficients& c,
-                                           const DirichletBC& bc, const Eigen::Matrix2Xd& guess) {
+                                           const ElasticityCoefficients& c, const DirichletBC& bc,
+                                           const Eigen::Matrix2Xd& guess) {
   const Eigen::VectorXd g = prescribed(bc);
   assembler_.assemble(x, c, system_);
   solver_.factorize(system_.K);
@@ -50,8 +50,7 @@ ElasticitySolution ElasticitySolver::solve(const Eigen::Matrix2Xd& x,
   return finish(assembler_.rhs(system_, g), guess);
 }
 
-ElasticitySolution ElasticitySolver::resolve(const DirichletBC& bc,
-                                             const Eigen::Matrix2Xd& guess) {
+ElasticitySolution ElasticitySolver::resolve(const DirichletBC& bc, const Eigen::Matrix2Xd& guess) {
   if (factorizations_ == 0) throw Error("solve_elasticity: resolve before any solve");
   return finish(assembler_.rhs(system_, prescribed(bc)), guess);
 }

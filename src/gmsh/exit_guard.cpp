@@ -24,8 +24,8 @@ extern "C" void exit_during_guard() {
 ExitGuard::ExitGuard(const std::string& input) {
   static const bool installed = std::atexit(exit_during_guard) == 0;
   (void)installed;
-  const std::string text = "homesh: error: " + input +
-                           ": the .geo exited (an Exit command) before a model was built\n";
+  const std::string text =
+      "homesh: error: " + input + ": the .geo exited (an Exit command) before a model was built\n";
   std::strncpy(message, text.c_str(), sizeof message - 1);
   message[sizeof message - 1] = '\0';
   armed = true;

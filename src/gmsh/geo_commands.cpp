@@ -63,7 +63,8 @@ std::vector<Token> tokens(const std::string& s) {
 bool statement_starts_after(const std::vector<Token>& t, std::size_t k) {
   if (k == 0) return true;
   const Token& p = t[k - 1];
-  if (p.kind == Token::Kind::Other) return p.text == ";" || p.text == "{" || p.text == "}" || p.text == ")";
+  if (p.kind == Token::Kind::Other)
+    return p.text == ";" || p.text == "{" || p.text == "}" || p.text == ")";
   return p.kind == Token::Kind::Word &&
          (p.text == "EndIf" || p.text == "EndFor" || p.text == "Else" || p.text == "Return");
 }
@@ -99,8 +100,8 @@ void scan(const std::string& file, const std::string& text, std::set<std::string
     if (std::find(kOutside.begin(), kOutside.end(), w) != kOutside.end()) {
       out.push_back({file, t[k].line, w});
     } else if (w == "Include" || w == "Merge") {
-      const bool literal = k + 2 < t.size() && t[k + 1].kind == Token::Kind::String &&
-                           t[k + 2].text == ";";
+      const bool literal =
+          k + 2 < t.size() && t[k + 1].kind == Token::Kind::String && t[k + 2].text == ";";
       if (!literal) {
         out.push_back({file, t[k].line, w});
         continue;

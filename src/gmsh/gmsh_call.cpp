@@ -21,7 +21,8 @@ void gmsh_call(const std::string& what, const std::function<void()>& body) {
   } catch (const Error&) {
     gmsh::logger::stop();
     throw;
-  } catch (const std::bad_alloc&) {  // out of memory is not Gmsh's error: the caller says what ran out
+  } catch (
+      const std::bad_alloc&) {  // out of memory is not Gmsh's error: the caller says what ran out
     gmsh::logger::stop();
     throw;
   } catch (const std::exception& e) {

@@ -67,7 +67,8 @@ constexpr int kFailed = 4;
 
 void read_in_child(const std::string& path, const std::function<void()>& read) {
   struct stat st {};
-  const std::uint64_t size = stat(path.c_str(), &st) == 0 ? static_cast<std::uint64_t>(st.st_size) : 0;
+  const std::uint64_t size =
+      stat(path.c_str(), &st) == 0 ? static_cast<std::uint64_t>(st.st_size) : 0;
   const std::uint64_t memory = (std::uint64_t{1} << 30) + 64 * size;
   const auto limit = std::chrono::seconds(10 + 2 * static_cast<long>(size >> 20));
 
@@ -99,13 +100,14 @@ void read_in_child(const std::string& path, const std::function<void()>& read) {
   for (auto pause = std::chrono::microseconds(200);;) {
     const pid_t done = waitpid(pid, &status, WNOHANG);
     if (done == pid) break;
-    if (done < 0 && errno != EINTR) throw Error(path + ": lost its reader: " + std::strerror(errno));
+    if (done < 0 && errno != EINTR)
+      throw Error(path + ": lost its reader: " + std::strerror(errno));
     if (std::chrono::steady_clock::now() - start > limit) {
       kill(pid, SIGKILL);
       waitpid(pid, &status, 0);
       close(report[0]);
-      throw Error(path + ": Gmsh's reader did not finish within " +
-                  std::to_string(limit.count()) + " s: is a count in the file corrupt?");
+      throw Error(path + ": Gmsh's reader did not finish within " + std::to_string(limit.count()) +
+                  " s: is a count in the file corrupt?");
     }
     std::this_thread::sleep_for(pause);
     pause = std::min(pause * 2, std::chrono::microseconds(20000));

@@ -128,10 +128,9 @@ Mesh read_model(const std::string& source, std::vector<std::size_t>* triangle_ta
     std::vector<double> local;
     gmsh::model::mesh::getElementProperties(type, name, edim, eorder, num_nodes, local,
                                             num_primary);
-    const bool ok = (dim == 0 && type == 15) ||
-                    (dim == 1 && name.rfind("Line", 0) == 0) ||
-                    (dim == 2 && name.rfind("Triangle", 0) == 0 &&
-                     num_nodes == triangle_node_count(eorder));
+    const bool ok =
+        (dim == 0 && type == 15) || (dim == 1 && name.rfind("Line", 0) == 0) ||
+        (dim == 2 && name.rfind("Triangle", 0) == 0 && num_nodes == triangle_node_count(eorder));
     if (!ok)
       throw Error(source + ": has elements of type '" + name + "' (Gmsh type " +
                   std::to_string(type) + ") on entity (" + std::to_string(dim) + ", " +

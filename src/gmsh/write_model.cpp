@@ -53,8 +53,8 @@ void add_nodes(const Mesh& m) {
 }
 
 // Adds the columns of `conn` grouped by entity; column k gets tag first + k.
-void add_elements(int type, const Eigen::MatrixXi& conn,
-                  const std::vector<int>& entity, std::size_t first) {
+void add_elements(int type, const Eigen::MatrixXi& conn, const std::vector<int>& entity,
+                  std::size_t first) {
   std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> by_entity;
   for (Eigen::Index k = 0; k < conn.cols(); ++k) {
     auto& [tags, nodes] = by_entity[entity[k]];

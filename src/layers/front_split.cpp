@@ -150,9 +150,11 @@ FrontSplit split_front(const Mesh& m, const std::vector<WallLoop>& loops,
                      s.mesh.x.col(s.mesh.tri(2, e))) > 0;
     if (valid) return s;
   }
-  throw Error("layers: the fans of normals cannot be split from the mesh into valid triangles "
-              "(at " + point_text(m.x.col(fans.front().node)) +
-              "...); try fewer normals (fan) or a larger fan_angle");
+  throw Error(
+      "layers: the fans of normals cannot be split from the mesh into valid triangles "
+      "(at " +
+      point_text(m.x.col(fans.front().node)) +
+      "...); try fewer normals (fan) or a larger fan_angle");
 }
 
 }  // namespace homesh

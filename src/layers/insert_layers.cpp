@@ -172,10 +172,10 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
   if (!room.complete) {
     const int b = std::max(room.bottleneck, 0);
     throw Error("layers: cannot open a room " + number_text(d[n]) + " thick for " +
-                std::to_string(n) + " layers: the elastic push (" + opt.room.formulation + ", nu = " +
-                number_text(opt.room.params.poisson) + ") keeps every element valid only up to " +
-                number_text(100 * room.reached) + " % of it (" + std::to_string(room.steps) +
-                " steps), tightest at the wall node " +
+                std::to_string(n) + " layers: the elastic push (" + opt.room.formulation +
+                ", nu = " + number_text(opt.room.params.poisson) +
+                ") keeps every element valid only up to " + number_text(100 * room.reached) +
+                " % of it (" + std::to_string(room.steps) + " steps), tightest at the wall node " +
                 point_text(m.x.col(r.lines[b].wall_node)) + " on curve " +
                 std::to_string(curve[b]) + "; use fewer or thinner layers (n, first, ratio)");
   }
@@ -219,7 +219,8 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
         const LayerLine& q = r.lines[first_line + j + 1];
         added.add({p.nodes[0], p.nodes[1], q.nodes[1]}, surface, 1);
         for (int k = 2; k <= n; ++k)
-          add_quad(out.x, p.nodes[k - 1], p.nodes[k], q.nodes[k], q.nodes[k - 1], surface, k, added);
+          add_quad(out.x, p.nodes[k - 1], p.nodes[k], q.nodes[k], q.nodes[k - 1], surface, k,
+                   added);
       }
     }
     first_line += start[size];

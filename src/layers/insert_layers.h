@@ -52,7 +52,7 @@ struct LayerOptions {
 struct LayerLine {
   int wall_node = -1;
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();  ///< unit
-  double scale = 1;                                      ///< node k at depth d_k * scale
+  double scale = 1;                                     ///< node k at depth d_k * scale
   std::vector<int> nodes;  ///< n + 1 nodes: the wall node, the layer nodes, the front node
 };
 
@@ -68,10 +68,10 @@ struct LayerResult {
   int wall_edges = 0;
   int fan_nodes = 0;
   int gap_triangles = 0;
-  double thickness = 0;    ///< d_n
-  int push_steps = 0;      ///< accepted elastic steps opening the room
-  int solves = 0;          ///< elasticity solves
-  int smoothed = 0;        ///< node moves repairing triangles the push squeezed (open_room.h)
+  double thickness = 0;       ///< d_n
+  int push_steps = 0;         ///< accepted elastic steps opening the room
+  int solves = 0;             ///< elasticity solves
+  int smoothed = 0;           ///< node moves repairing triangles the push squeezed (open_room.h)
   bool from_corners = false;  ///< the input was of order > 1
   int sharpest_node = -1;     ///< wall node with the largest domain angle
   double sharpest_angle = 0;  ///< its domain angle, radians

@@ -32,11 +32,11 @@ struct RoomOptions {
   /// mesh at every step; "plain" (E = 1, no added terms) is the thesis' choice.
   std::string formulation = "plain";
   FormulationParams params;  ///< nu, added-term scale and power of the analogy
-  double cap = 1;        ///< fraction of min(delta_i) a node may move per step, in (0, 1]
-  int max_steps = 200;   ///< accepted steps before giving up
-  int max_halvings = 8;  ///< halvings of a failing step before giving up
-  bool flips = true;     ///< flip edges after each step (edge_flips.h)
-  bool smoothing = true; ///< smooth the squeezed free nodes at the end (star_smoothing.h)
+  double cap = 1;            ///< fraction of min(delta_i) a node may move per step, in (0, 1]
+  int max_steps = 200;       ///< accepted steps before giving up
+  int max_halvings = 8;      ///< halvings of a failing step before giving up
+  bool flips = true;         ///< flip edges after each step (edge_flips.h)
+  bool smoothing = true;     ///< smooth the squeezed free nodes at the end (star_smoothing.h)
   LinearSolverOptions solver;
 };
 

@@ -15,7 +15,8 @@ double worst_with(const Mesh& m, const std::vector<int>& star, int node, const E
   double worst = 1;
   for (int e : star) {
     Eigen::Matrix<double, 2, 3> X;
-    for (int i = 0; i < 3; ++i) X.col(i) = m.tri(i, e) == node ? p : Eigen::Vector2d(m.x.col(m.tri(i, e)));
+    for (int i = 0; i < 3; ++i)
+      X.col(i) = m.tri(i, e) == node ? p : Eigen::Vector2d(m.x.col(m.tri(i, e)));
     if (layers_detail::orient(X.col(0), X.col(1), X.col(2)) <= 0) return -1;
     worst = std::min(worst, radius_ratio(X));
   }

@@ -105,8 +105,8 @@ std::vector<WallLoop> wall_loops(const Mesh& m, const std::vector<int>& curves) 
         loop.end_lines[0] = k;
         for (const int line : loop.end_lines) {
           if (used[line])
-            throw Error("layers: the boundary line from " + node_text(m, m.line(0, line)) +
-                        " to " + node_text(m, m.line(1, line)) +
+            throw Error("layers: the boundary line from " + node_text(m, m.line(0, line)) + " to " +
+                        node_text(m, m.line(1, line)) +
                         " ends two open walls; mesh it with more than one line");
           used[line] = true;
         }

@@ -37,9 +37,7 @@ struct WallLoop {
   /// The boundary node before nodes[i] (cyclically, or ends[0]).
   int prev(int i) const { return i > 0 ? nodes[i - 1] : closed ? nodes.back() : ends[0]; }
   /// The boundary node after nodes[i] (cyclically, or ends[1]).
-  int next(int i) const {
-    return i + 1 < size() ? nodes[i + 1] : closed ? nodes.front() : ends[1];
-  }
+  int next(int i) const { return i + 1 < size() ? nodes[i + 1] : closed ? nodes.front() : ends[1]; }
 };
 
 /// The boundary lines of m on `curves`, chained into closed loops and open

@@ -30,11 +30,11 @@
 namespace homesh {
 
 struct NormalOptions {
-  bool multi = false;         ///< fans at nodes whose domain angle reaches fan_angle
-  int fan = 5;                ///< normals per fan: odd, >= 3
-  double fan_angle = 330;     ///< degrees, in [180, 360)
-  double max_scale = M_SQRT2; ///< cap of the single-normal miter 1 / sin(theta / 2)
-  double max_end_angle = 160; ///< degrees, largest domain angle at the end of an open wall
+  bool multi = false;          ///< fans at nodes whose domain angle reaches fan_angle
+  int fan = 5;                 ///< normals per fan: odd, >= 3
+  double fan_angle = 330;      ///< degrees, in [180, 360)
+  double max_scale = M_SQRT2;  ///< cap of the single-normal miter 1 / sin(theta / 2)
+  double max_end_angle = 160;  ///< degrees, largest domain angle at the end of an open wall
 };
 
 /// The normals at one wall node.
@@ -42,7 +42,7 @@ struct WallNormal {
   double angle = M_PI;  ///< domain angle theta, radians in (0, 2 pi]
   /// 1 (single) or `fan` unit directions, counter-clockwise from the outgoing edge's side.
   std::vector<Eigen::Vector2d> directions;
-  double scale = 1;     ///< s above: depth d lies at x + d * scale * direction
+  double scale = 1;  ///< s above: depth d lies at x + d * scale * direction
 };
 
 /// Normals at wall node x between prev and next (domain on the left of

@@ -5,7 +5,8 @@
 namespace homesh {
 
 Mesh& Context::require_mesh(const std::string& stage) {
-  if (!mesh) throw Error("stage '" + stage + "': " + input + " has no mesh (run the mesh stage first)");
+  if (!mesh)
+    throw Error("stage '" + stage + "': " + input + " has no mesh (run the mesh stage first)");
   return *mesh;
 }
 

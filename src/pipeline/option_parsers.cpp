@@ -85,8 +85,14 @@ Parser<double> real(double lo, double hi, const char* bounds) {
 }
 
 Parser<bool> boolean() {
-  return choice<bool>({{"true", true}, {"false", false}, {"1", true}, {"0", false},
-                       {"yes", true}, {"no", false}, {"on", true}, {"off", false}});
+  return choice<bool>({{"true", true},
+                       {"false", false},
+                       {"1", true},
+                       {"0", false},
+                       {"yes", true},
+                       {"no", false},
+                       {"on", true},
+                       {"off", false}});
 }
 
 Parser<std::string> text() {

@@ -31,9 +31,10 @@ class OptionTable {
   template <class V, class Member>
   OptionTable& add(std::string key, Member member, Parser<V> parser, std::string help) {
     const std::function<V&(T&)> at = member;
-    rows_.push_back({std::move(key), std::move(help),
-                     [at, read = parser.read](T& o, const std::string& s) { return read(s, at(o)); },
-                     [at, show = parser.show](T& o) { return show(at(o)); }});
+    rows_.push_back(
+        {std::move(key), std::move(help),
+         [at, read = parser.read](T& o, const std::string& s) { return read(s, at(o)); },
+         [at, show = parser.show](T& o) { return show(at(o)); }});
     return *this;
   }
 
@@ -54,8 +55,8 @@ class OptionTable {
       if (!row) {
         std::string known;
         for (const Row& r : rows_) known += (known.empty() ? "" : ", ") + r.key;
-        throw Error("stage '" + stage + "': unknown option '" + key + "' (options: " +
-                    (known.empty() ? "none" : known) + ")");
+        throw Error("stage '" + stage + "': unknown option '" + key +
+                    "' (options: " + (known.empty() ? "none" : known) + ")");
       }
       const std::string refused = row->read(o, value);
       if (!refused.empty())

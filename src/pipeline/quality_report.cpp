@@ -25,9 +25,9 @@ std::string validity_line(const Mesh& m, const MeshValidity& v, std::size_t wors
 std::string histogram_line(const std::string& name, const Eigen::VectorXd& values) {
   int bins[10] = {};
   for (double q : values) ++bins[std::clamp(static_cast<int>(q * 10), 0, 9)];
-  std::string line = fmt::format("  {:<10} min {:.4f}  mean {:.4f}  |", name,
-                                 values.size() ? values.minCoeff() : 0.0,
-                                 values.size() ? values.mean() : 0.0);
+  std::string line =
+      fmt::format("  {:<10} min {:.4f}  mean {:.4f}  |", name,
+                  values.size() ? values.minCoeff() : 0.0, values.size() ? values.mean() : 0.0);
   for (int b : bins) line += fmt::format(" {}", b);
   return line + " |";
 }
@@ -41,8 +41,8 @@ std::string worst_elements(const Mesh& m, const Eigen::VectorXd& values, int cou
   std::string out;
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector2d c = m.corner_centroid(order[k]);
-    out += fmt::format("    triangle {:<8} at ({:.4g}, {:.4g})  {:.4f}\n",
-                       m.triangle_tag(order[k]), c.x(), c.y(), values(order[k]));
+    out += fmt::format("    triangle {:<8} at ({:.4g}, {:.4g})  {:.4f}\n", m.triangle_tag(order[k]),
+                       c.x(), c.y(), values(order[k]));
   }
   return out;
 }

@@ -5,8 +5,8 @@
 #include <sys/stat.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 
@@ -82,25 +82,25 @@ void check_nothing_dropped(const std::string& path) {
 void check_model_extent(const std::string& path) {
   double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
   gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
-  const double far = std::max({std::abs(x0), std::abs(y0), std::abs(z0), std::abs(x1),
-                               std::abs(y1), std::abs(z1)});
+  const double far = std::max(
+      {std::abs(x0), std::abs(y0), std::abs(z0), std::abs(x1), std::abs(y1), std::abs(z1)});
   const double across = std::hypot(x1 - x0, y1 - y0, z1 - z0);
   if (!std::isfinite(far) || far > limits::kMaxCoordinate)
     throw Error(path + ": the model reaches " + fmt::format("{:g}", far) +
                 " from the origin; homesh accepts coordinates up to " +
                 fmt::format("{:g}", limits::kMaxCoordinate));
   if (!(across >= limits::kMinExtent && across >= limits::kMinRelativeExtent * far))
-    throw Error(path + ": the model is " + fmt::format("{:g}", across) +
-                " across, too small to mesh where it lies (at least " +
-                fmt::format("{:g}", std::max(limits::kMinExtent, limits::kMinRelativeExtent * far)) +
-                ")");
+    throw Error(
+        path + ": the model is " + fmt::format("{:g}", across) +
+        " across, too small to mesh where it lies (at least " +
+        fmt::format("{:g}", std::max(limits::kMinExtent, limits::kMinRelativeExtent * far)) + ")");
 }
 
 }  // namespace
 
 void load_input(const std::string& path, Context& ctx) {
-  static const std::vector<std::string> kinds = {"geo", "step", "stp", "brep",
-                                                 "iges", "igs", "msh"};
+  static const std::vector<std::string> kinds = {"geo",  "step", "stp", "brep",
+                                                 "iges", "igs",  "msh"};
   const std::string ext = extension(path);
   if (std::find(kinds.begin(), kinds.end(), ext) == kinds.end())
     throw Error(path + ": unknown input kind '." + ext +
@@ -148,10 +148,9 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
   }
   set_progress(progress_wanted(ctx.log.quiet));
   for (std::size_t k = 0; k < plan.size(); ++k) {
-    const Progress stage_label(
-        "stage " + std::to_string(k + 1) + "/" + std::to_string(plan.size()) + " " +
-            plan[k].first->name,
-        0);
+    const Progress stage_label("stage " + std::to_string(k + 1) + "/" +
+                                   std::to_string(plan.size()) + " " + plan[k].first->name,
+                               0);
     plan[k].first->run(ctx, plan[k].second);
   }
 }

@@ -16,10 +16,9 @@
 namespace homesh {
 
 const std::vector<Stage>& stages() {
-  static const std::vector<Stage> table = {mesh_stage(), order_stage(), layers_stage(),
-                                           curve_stage(), optimise_stage(), rotate_stage(),
-                                           quality_stage(), info_stage(),
-                                           voronoi_stage()};
+  static const std::vector<Stage> table = {mesh_stage(),    order_stage(),    layers_stage(),
+                                           curve_stage(),   optimise_stage(), rotate_stage(),
+                                           quality_stage(), info_stage(),     voronoi_stage()};
   return table;
 }
 

@@ -97,9 +97,10 @@ PYBIND11_MODULE(homesh, m) {
         "not certified valid unless keep_invalid.");
   m.def("set_quiet", &api::set_quiet, py::arg("quiet") = true,
         "Silence homesh's reports and progress (warnings stay).");
-  m.def("validity", [] { return validity_dict(api::validity()); },
-        "Certified validity of the current model's mesh: triangles, invalid, worst minJ/maxJ, "
-        "its triangle (1-based) and the CLI's validity line.");
+  m.def(
+      "validity", [] { return validity_dict(api::validity()); },
+      "Certified validity of the current model's mesh: triangles, invalid, worst minJ/maxJ, "
+      "its triangle (1-based) and the CLI's validity line.");
   m.def(
       "stages",
       [] {
@@ -118,7 +119,7 @@ PYBIND11_MODULE(homesh, m) {
   // One function per stage, named after it, so `homesh.order(p=4)` reads like the CLI.
   for (const api::StageInfo& s : api::stages()) {
     const std::string name = s.name;
-    m.def(name.c_str(), [name](const py::kwargs& kw) { return run_stage(name, kw); },
-          s.help.c_str());
+    m.def(
+        name.c_str(), [name](const py::kwargs& kw) { return run_stage(name, kw); }, s.help.c_str());
   }
 }

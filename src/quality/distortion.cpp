@@ -15,8 +15,8 @@ double distortion(double q) {
   return 1.0 / q - 1.0;
 }
 
-double distortion_function(const Measure& m, const ElementSampling& rule,
-                           const Eigen::Matrix2Xd& X, double r, Reference ref) {
+double distortion_function(const Measure& m, const ElementSampling& rule, const Eigen::Matrix2Xd& X,
+                           double r, Reference ref) {
   if (rule.weights().size() != rule.size()) {
     throw Error("distortion function of " + m.name + " needs a quadrature rule with weights");
   }

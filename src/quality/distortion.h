@@ -26,8 +26,7 @@ double distortion(double q);
 /// distortion-free at every point, +infinity if the measure is 0 at any point.
 /// The thesis used r = 2 and a 12-point Gauss rule. Throws homesh::Error if
 /// `rule` has no weights, X has the wrong number of nodes, or r <= 1.
-double distortion_function(const Measure& m, const ElementSampling& rule,
-                           const Eigen::Matrix2Xd& X, double r,
-                           Reference ref = Reference::ideal);
+double distortion_function(const Measure& m, const ElementSampling& rule, const Eigen::Matrix2Xd& X,
+                           double r, Reference ref = Reference::ideal);
 
 }  // namespace homesh

@@ -45,12 +45,10 @@ class Refinement {
     const auto by_max = [](const Domain& a, const Domain& b) { return a.max_b < b.max_b; };
     refine(by_min, ok);
     refine(by_max, ok);
-    const auto lowest = std::min_element(live_.begin(), live_.end(), [](auto& a, auto& b) {
-      return a.min_b < b.min_b;
-    });
-    const auto highest = std::max_element(live_.begin(), live_.end(), [](auto& a, auto& b) {
-      return a.max_b < b.max_b;
-    });
+    const auto lowest = std::min_element(live_.begin(), live_.end(),
+                                         [](auto& a, auto& b) { return a.min_b < b.min_b; });
+    const auto highest = std::max_element(live_.begin(), live_.end(),
+                                          [](auto& a, auto& b) { return a.max_b < b.max_b; });
     return result(*lowest, *highest);
   }
 
@@ -117,7 +115,7 @@ class Refinement {
 
   int d_, n_;
   BoundsOptions opt_;
-  const double* root_;          // the coefficients of the whole triangle
+  const double* root_;  // the coefficients of the whole triangle
   Domain root_domain_;
   std::vector<double> coeffs_;  // the coefficients of every domain made
   std::vector<Domain> live_;    // the current partition of the triangle

@@ -39,15 +39,15 @@ struct Invariance {
 };
 
 struct Measure {
-  std::string name;           ///< "Q1" .. "Q17"
-  std::string title;          ///< Table 3.1 name, e.g. "Laplace"
-  std::string formula;        ///< the Table 3.1 formula in 2D, as text
+  std::string name;     ///< "Q1" .. "Q17"
+  std::string title;    ///< Table 3.1 name, e.g. "Laplace"
+  std::string formula;  ///< the Table 3.1 formula in 2D, as text
   /// How the raw value is mapped to [0, 1]: "min(x, 1/x), x = ..." folds the
   /// ratio to the ideal value (ratio_quality.h); "2 raw" or "none: ..." scale a
   /// raw value that is largest at the ideal.
   std::string normalisation;
-  std::string source;         ///< thesis equation and the paper it cites
-  Invariance invariance;      ///< claimed by Table 3.7
+  std::string source;     ///< thesis equation and the paper it cites
+  Invariance invariance;  ///< claimed by Table 3.7
   /// The thesis normalises this measure by its largest value over the element,
   /// Q / Qmax (text after Eq 3.49): Q2, Q3, Q4, Q5, Q17.
   bool thesis_max_normalised;

@@ -107,8 +107,8 @@ class LatticeSampling {
 constexpr int kPrefetchAhead = 4;
 
 // The one loop over the triangles: bounds if `bounds`, measures if qs is not empty.
-MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
-                  Reference ref, const BoundsOptions* bounds, int threads) {
+MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int lattice, Reference ref,
+                  const BoundsOptions* bounds, int threads) {
   const int p = m.order, n = m.num_triangles(), q = bezier_size(p - 1);
   std::optional<LatticeSampling> sampling;
   if (!qs.empty()) sampling.emplace(p, lattice);

@@ -16,9 +16,7 @@ double smoothness_quality(const Eigen::Matrix2d& W) {
   return 2.0 * smoothness_raw(W);
 }
 
-double aspect_ratio_raw(const Eigen::Matrix2d& W) {
-  return W.determinant() / W.squaredNorm();
-}
+double aspect_ratio_raw(const Eigen::Matrix2d& W) { return W.determinant() / W.squaredNorm(); }
 
 double aspect_ratio_quality(const Eigen::Matrix2d& W) {
   if (W.determinant() <= 0.0) return 0.0;

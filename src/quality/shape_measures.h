@@ -36,12 +36,14 @@ double smoothness_raw(const Eigen::Matrix2d& W);
 /// Q6: 2 (omega |W^-1|_F^2)^-1 = 2 omega / |W|_F^2.
 double smoothness_quality(const Eigen::Matrix2d& W);
 
-/// Q7 raw, aspect ratio (Tinoco-Ruiz & Barrera-Sanchez; Eq 3.41): (|W|_F^2 / omega)^-1, at most 1/2.
+/// Q7 raw, aspect ratio (Tinoco-Ruiz & Barrera-Sanchez; Eq 3.41): (|W|_F^2 / omega)^-1, at most
+/// 1/2.
 double aspect_ratio_raw(const Eigen::Matrix2d& W);
 /// Q7: 2 omega / |W|_F^2.
 double aspect_ratio_quality(const Eigen::Matrix2d& W);
 
-/// Q8 raw, shape (Oddy et al.; Eq 3.42, d = 2): [3/2 omega^-2 (|D|_F^2 - |W|_F^4 / 3)]^-1, in (0, 1].
+/// Q8 raw, shape (Oddy et al.; Eq 3.42, d = 2): [3/2 omega^-2 (|D|_F^2 - |W|_F^4 / 3)]^-1, in (0,
+/// 1].
 double oddy_raw(const Eigen::Matrix2d& W);
 /// Q8: the raw value.
 double oddy_quality(const Eigen::Matrix2d& W);

@@ -51,9 +51,7 @@ class CrystalEntries {
   explicit CrystalEntries(int nodes) : slot_(nodes) {}
 
   CrystalEntry& operator[](int e) { return e < size() ? slot_[e] : extra_[e - size()]; }
-  const CrystalEntry& operator[](int e) const {
-    return e < size() ? slot_[e] : extra_[e - size()];
-  }
+  const CrystalEntry& operator[](int e) const { return e < size() ? slot_[e] : extra_[e - size()]; }
   /// The node of entry e.
   int node(int e) const { return e < size() ? e : extra_node_[e - size()]; }
   /// Node x's winner (CrystalEntry::winner).

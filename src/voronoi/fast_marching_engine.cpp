@@ -314,8 +314,9 @@ class Sweep {
     const CartesianGrid& g = field_.grid();
     const bool seed = source < 0;
     const Eigen::Vector2d from = source_point(source);
-    const Eigen::Vector2d p = seed ? Eigen::Vector2d(seeds_.col(-1 - source))
-                                   : g.point(static_cast<int>(from.x()), static_cast<int>(from.y()));
+    const Eigen::Vector2d p = seed
+                                  ? Eigen::Vector2d(seeds_.col(-1 - source))
+                                  : g.point(static_cast<int>(from.x()), static_cast<int>(from.y()));
     const double clear = seed ? seed_clearance_[-1 - source] : field_.clearance(source);
     const Eigen::Vector2d q = g.point(ix, jx);
     return field_.segment_clear(p, clear, q, field_.clearance(x), (q - p).norm());
@@ -435,7 +436,7 @@ class Sweep {
   const Spread spread_ = spread_for(field_);
   const double trust2_ = std::pow(kTrustCells * field_.grid().ds(), 2);
   std::vector<int> original_;
-  Eigen::Matrix2Xd seeds_;  ///< in the sweep's order, as the next five
+  Eigen::Matrix2Xd seeds_;      ///< in the sweep's order, as the next five
   Eigen::Matrix2Xd seed_grid_;  ///< in grid units from the origin
   std::vector<Eigen::Matrix2d> seed_metric_;
   std::vector<LatticeStencil> seed_stencil_;  ///< the seed metric's, for its Gram matrix

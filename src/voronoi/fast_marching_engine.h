@@ -31,8 +31,8 @@
 // kTrustCells cells, and beyond where the metric is the same at both ends and
 // at the middle of the segment (so a field that is constant in a region is
 // exact there too; a test holds the full update to the exact diagram at 1:1,
-// 1:10 and 1:100, as the constant-metric shortcut). Around each seed the times are exact in the metric ball
-// of smallest semi-axis 3 ds (or VoronoiOptions::seed_radius).
+// 1:10 and 1:100, as the constant-metric shortcut). Around each seed the times are exact in the
+// metric ball of smallest semi-axis 3 ds (or VoronoiOptions::seed_radius).
 //
 // Differences from the level-set engine: a metric field enters as the
 // Riemannian metric M(x) = Shepard average of the corner tensors

@@ -6,8 +6,7 @@
 
 namespace homesh {
 
-LabelContacts label_contacts(const StencilField& field, const Eigen::VectorXi& labels,
-                             int count) {
+LabelContacts label_contacts(const StencilField& field, const Eigen::VectorXi& labels, int count) {
   const CartesianGrid& g = field.grid();
   // Pairs as a * 2^32 + b: one integer compare to sort them.
   std::vector<std::uint64_t> pairs;

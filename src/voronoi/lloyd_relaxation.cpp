@@ -26,8 +26,8 @@ Eigen::Matrix2Xd region_centroids(const CartesianGrid& g, const Eigen::VectorXi&
                                                       : metric.metric_at(x);
       const Eigen::Matrix2d W = std::sqrt(M.determinant()) * M;
       const Eigen::Vector2d Mx = W * x;
-      sum[s] += (Eigen::Matrix<double, 5, 1>() << W(0, 0), W(0, 1), W(1, 1), Mx.x(), Mx.y())
-                    .finished();
+      sum[s] +=
+          (Eigen::Matrix<double, 5, 1>() << W(0, 0), W(0, 1), W(1, 1), Mx.x(), Mx.y()).finished();
     }
   Eigen::Matrix2Xd z(2, seeds);
   for (int s = 0; s < seeds; ++s) {

@@ -30,13 +30,13 @@ namespace homesh {
 constexpr int kAllFrontRows = std::numeric_limits<int>::max();
 
 struct SeedingOptions {
-  double spacing = 0.8;         ///< smallest metric distance between seeds
-  double annulus = 0.3;         ///< candidates up to spacing (1 + annulus) away
-  double boundary_gap = 0.7;    ///< smallest metric distance to the boundary
-  int tries = 24;               ///< candidates per seed before it retires
-  double front_spacing = 0.75;  ///< smallest metric distance of a front seed to any other
+  double spacing = 0.8;            ///< smallest metric distance between seeds
+  double annulus = 0.3;            ///< candidates up to spacing (1 + annulus) away
+  double boundary_gap = 0.7;       ///< smallest metric distance to the boundary
+  int tries = 24;                  ///< candidates per seed before it retires
+  double front_spacing = 0.75;     ///< smallest metric distance of a front seed to any other
   int front_rows = kAllFrontRows;  ///< rows of the advancing front (metric_front_seeds)
-  unsigned random_seed = 1;     ///< std::mt19937, so the seeds are reproducible
+  unsigned random_seed = 1;        ///< std::mt19937, so the seeds are reproducible
 };
 
 /// grid and domain: as in VoronoiProblem (domain < 0 inside, a signed

@@ -18,9 +18,7 @@ struct Box {
   bool holds(const Eigen::Vector2d& p) const {
     return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
   }
-  Box grown(double by) const {
-    return {lo.array() - by, hi.array() + by};
-  }
+  Box grown(double by) const { return {lo.array() - by, hi.array() + by}; }
 };
 
 int root(std::vector<int>& parent, int k) {

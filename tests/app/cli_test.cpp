@@ -2,8 +2,8 @@
 // assert the numbers in its log and in the files it writes.
 #include <gmsh.h>
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -72,8 +72,8 @@ TEST_CASE("NACA-7526 mesh, order 4, info: the issue's command works end to end",
   REQUIRE(element_nodes.size() == 15 * elements.size());
   // Every triangle of the written file is valid in Gmsh's own evaluation.
   std::vector<double> local = {1.0 / 3, 1.0 / 3, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0}, jac, det, pts;
-  gmsh::model::mesh::getJacobians(gmsh::model::mesh::getElementType("Triangle", 4), local, jac,
-                                  det, pts);
+  gmsh::model::mesh::getJacobians(gmsh::model::mesh::getElementType("Triangle", 4), local, jac, det,
+                                  pts);
   REQUIRE(det.size() == 4 * elements.size());
   REQUIRE(*std::min_element(det.begin(), det.end()) > 0);
 }

@@ -3,16 +3,16 @@
 #include <gmsh.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <fstream>
 #include <iterator>
-#include <cmath>
 #include <regex>
 #include <tuple>
 
-#include "gmsh/read_model.h"
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
 #include "../support/temp_dir.h"
+#include "gmsh/read_model.h"
 
 using homesh::test::run_homesh;
 using homesh::test::TempDir;
@@ -55,21 +55,27 @@ TEST_CASE("curve: NACA-7526 at order 4, valid, with a bad option refused", "[app
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   std::smatch m;
-  REQUIRE(std::regex_search(r.output, m, std::regex(R"(validity: 0 invalid of \d+ triangles.*worst minJ/maxJ (\d\.\d+))")));
+  REQUIRE(std::regex_search(
+      r.output, m,
+      std::regex(R"(validity: 0 invalid of \d+ triangles.*worst minJ/maxJ (\d\.\d+))")));
   REQUIRE(std::stod(m[1]) > 0.9);
   r = run_homesh(geo + "naca.geo -m mesh -m curve:p=4:formulation=magic " + out);
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("stage 'curve': option formulation=magic: expected plain, area,") != std::string::npos);
+  REQUIRE(r.output.find("stage 'curve': option formulation=magic: expected plain, area,") !=
+          std::string::npos);
   r = run_homesh(geo + "naca.geo -m mesh -m curve:p=4:nu=0.5 " + out);
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("stage 'curve': option nu=0.5: out of range (-1, 0.5)") != std::string::npos);
+  REQUIRE(r.output.find("stage 'curve': option nu=0.5: out of range (-1, 0.5)") !=
+          std::string::npos);
 }
 
 namespace {
 // (triangles solved on, triangles, worst minJ/maxJ) from the curve stage's log.
 std::tuple<int, int, double> curve_log(const std::string& output) {
   std::smatch m;
-  REQUIRE(std::regex_search(output, m, std::regex(R"(curve: .* posed on (\d+) of (\d+) triangles: .* worst minJ/maxJ (\d\.\d+))")));
+  REQUIRE(std::regex_search(
+      output, m,
+      std::regex(R"(curve: .* posed on (\d+) of (\d+) triangles: .* worst minJ/maxJ (\d\.\d+))")));
   return {std::stoi(m[1]), std::stoi(m[2]), std::stod(m[3])};
 }
 }  // namespace
@@ -80,8 +86,9 @@ std::tuple<int, int, double> curve_log(const std::string& output) {
 TEST_CASE("curve: boundary layers curved near the wall only, better than the plain analogy",
           "[app]") {
   // NACA-7526, 10 layers from 1e-3: the solve is posed on the layers and a little beyond.
-  auto r = run_homesh(geo + "naca.geo -m mesh -m layers:walls=aerofoil:n=10:first=1e-3:ratio=1.3 "
-                            "-m curve:p=2");
+  auto r = run_homesh(geo +
+                      "naca.geo -m mesh -m layers:walls=aerofoil:n=10:first=1e-3:ratio=1.3 "
+                      "-m curve:p=2");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto [near, all, naca] = curve_log(r.output);
@@ -110,10 +117,12 @@ TEST_CASE("curve: boundary layers curved near the wall only, better than the pla
   // them (the 1e-4 first layer exactly), the free vertices moved.
   const TempDir dir;
   const std::string lin = dir / "layers_lin.msh", out = dir / "layers.msh";
-  REQUIRE(run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 " +
-                     lin).exit_code == 0);
+  REQUIRE(run_homesh(geo +
+                     "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 " + lin)
+              .exit_code == 0);
   REQUIRE(run_homesh(lin + " -m curve:p=3 " + out).exit_code == 0);
-  REQUIRE(run_homesh(lin + " -m curve:p=3:vertices=free:reach=0 " + out + ".free.msh").exit_code == 0);
+  REQUIRE(run_homesh(lin + " -m curve:p=3:vertices=free:reach=0 " + out + ".free.msh").exit_code ==
+          0);
   homesh::test::GmshSession session;
   gmsh::open(lin);
   const homesh::Mesh a = homesh::gmsh_adapter::read_model(lin);
@@ -186,5 +195,6 @@ TEST_CASE("curve: a bare .msh is curved onto splines rebuilt from its linear bou
   }
   r = run_homesh(lin + " -m curve:p=3:corner=180 " + out);
   REQUIRE(r.exit_code != 0);
-  REQUIRE(r.output.find("stage 'curve': option corner=180: out of range (0, 180)") != std::string::npos);
+  REQUIRE(r.output.find("stage 'curve': option corner=180: out of range (0, 180)") !=
+          std::string::npos);
 }

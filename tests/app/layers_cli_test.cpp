@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "gmsh/read_model.h"
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
 #include "../support/temp_dir.h"
+#include "gmsh/read_model.h"
 
 using homesh::test::run_homesh;
 using homesh::test::TempDir;
@@ -37,7 +37,8 @@ LayerLog parse(const std::string& out) {
   REQUIRE(std::regex_search(out, m, std::regex(R"((\d+) -> (\d+) triangles)")));
   l.before = std::stoi(m[1]);
   l.after = std::stoi(m[2]);
-  REQUIRE(std::regex_search(out, m, std::regex(R"(min Q (\d\.\d+) over its (\d+) layer triangles)")));
+  REQUIRE(
+      std::regex_search(out, m, std::regex(R"(min Q (\d\.\d+) over its (\d+) layer triangles)")));
   l.corner_q = std::stod(m[1]);
   l.corner_triangles = std::stoi(m[2]);
   return l;
@@ -48,8 +49,10 @@ LayerLog parse(const std::string& out) {
 TEST_CASE("layers: 3 layers around the plate's hole, curved at p = 3, valid (Fig 4.8)", "[app]") {
   const TempDir dir;
   const std::string out = dir / "plate.msh";
-  const auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=3:first=0.01:"
-                                  "ratio=1.3 -m curve:p=3 -m quality " + out);
+  const auto r = run_homesh(geo +
+                            "plate_hole.geo -m mesh -m layers:walls=hole:n=3:first=0.01:"
+                            "ratio=1.3 -m curve:p=3 -m quality " +
+                            out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
@@ -78,11 +81,14 @@ TEST_CASE("layers: 3 layers around the plate's hole, curved at p = 3, valid (Fig
   CHECK(first < 0.0105);
 }
 
-TEST_CASE("layers: 15 layers on NACA-7526 with single normals, curved at p = 3 (Fig 4.9)", "[app]") {
+TEST_CASE("layers: 15 layers on NACA-7526 with single normals, curved at p = 3 (Fig 4.9)",
+          "[app]") {
   const TempDir dir;
   const std::string out = dir / "naca15.msh";
-  const auto r = run_homesh(geo + "naca.geo -m mesh -m layers:walls=aerofoil:n=15:first=1e-3:"
-                                  "ratio=1.2 -m curve:p=3 -m quality " + out);
+  const auto r = run_homesh(geo +
+                            "naca.geo -m mesh -m layers:walls=aerofoil:n=15:first=1e-3:"
+                            "ratio=1.2 -m curve:p=3 -m quality " +
+                            out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.output.find("thickness 0.0720351") != std::string::npos);
@@ -104,7 +110,8 @@ TEST_CASE("layers: 5 normals at the trailing edge beat a single one (Figs 4.10, 
   r = run_homesh(geo + layers + ":normals=multi " + out);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.output.find("no wall node reaches fan_angle = 330 deg") != std::string::npos);
-  r = run_homesh(geo + layers + ":normals=multi:fan=5:fan_angle=320 -m curve:p=3 -m quality " + out);
+  r = run_homesh(geo + layers + ":normals=multi:fan=5:fan_angle=320 -m curve:p=3 -m quality " +
+                 out);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
   const LayerLog multi = parse(r.output);
@@ -115,11 +122,14 @@ TEST_CASE("layers: 5 normals at the trailing edge beat a single one (Figs 4.10, 
   CHECK(multi.corner_q > 0.3);
 }
 
-TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p = 3, valid", "[app]") {
+TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p = 3, valid",
+          "[app]") {
   const TempDir dir;
   const std::string out = dir / "channel.msh";
-  const auto r = run_homesh(geo + "channel.geo -m mesh -m layers:walls=wall:n=5:first=1e-3:"
-                                  "ratio=1.3 -m curve:p=3 -m quality " + out);
+  const auto r = run_homesh(geo +
+                            "channel.geo -m mesh -m layers:walls=wall:n=5:first=1e-3:"
+                            "ratio=1.3 -m curve:p=3 -m quality " +
+                            out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
@@ -149,14 +159,16 @@ TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p =
     if (m.x(1, i) < 0.0091) low.push_back(m.x(1, i));
   std::sort(low.begin(), low.end());
   REQUIRE(low.size() == 6);
-  for (int k = 0; k <= 5; ++k) CHECK(low[k] == Approx(1e-3 * (std::pow(1.3, k) - 1) / 0.3).margin(1e-12));
+  for (int k = 0; k <= 5; ++k)
+    CHECK(low[k] == Approx(1e-3 * (std::pow(1.3, k) - 1) / 0.3).margin(1e-12));
   CHECK(off < 1e-12);
 }
 
 TEST_CASE("layers: refusals name the cause", "[app]") {
   const TempDir dir;
   const std::string out = dir / "refused.msh";
-  auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=5:first=0.1:ratio=1.5 " + out);
+  auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=5:first=0.1:ratio=1.5 " +
+                      out);
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("cannot open a room 1.319 thick for 5 layers") != std::string::npos);
   r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=wing " + out);
@@ -174,10 +186,13 @@ namespace {
 // scripts/naca_rotation.py (thesis Section 4.4.2) turned about its quarter chord, nu = 0.25.
 int naca_theta_max(const std::string& fan, const std::string& formulation) {
   const TempDir dir;
-  const auto r = run_homesh(geo + "naca7526_rotation.geo -m mesh -m layers:walls=aerofoil:n=2:"
-                            "first=0.02:ratio=1.2" + fan + " -m curve:p=2 -m rotate:wall=aerofoil:"
-                            "centre=0.25,0:step=-1:max=90:nu=0.25:" + formulation +
-                            " " + dir / "naca_rotation.msh");
+  const auto r = run_homesh(geo +
+                            "naca7526_rotation.geo -m mesh -m layers:walls=aerofoil:n=2:"
+                            "first=0.02:ratio=1.2" +
+                            fan +
+                            " -m curve:p=2 -m rotate:wall=aerofoil:"
+                            "centre=0.25,0:step=-1:max=90:nu=0.25:" +
+                            formulation + " " + dir / "naca_rotation.msh");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   std::smatch m;

@@ -44,9 +44,19 @@ std::string join(const std::vector<std::string>& lines) {
 // One mutant of `base`: kind 0 flips bits, 1 replaces a number by a hostile
 // one, 2 drops a line, 3 repeats a line, 4 cuts the file short.
 std::string mutate(const std::string& base, std::mt19937& rng) {
-  static const char* hostile[] = {"-1", "0", "-5", "1e300", "nan", "inf", "4294967297",
-                                  "9223372036854775808", "18446744073709551615", "1e12",
-                                  "999999999", "3.5", "-0"};
+  static const char* hostile[] = {"-1",
+                                  "0",
+                                  "-5",
+                                  "1e300",
+                                  "nan",
+                                  "inf",
+                                  "4294967297",
+                                  "9223372036854775808",
+                                  "18446744073709551615",
+                                  "1e12",
+                                  "999999999",
+                                  "3.5",
+                                  "-0"};
   std::string s = base;
   const int kind = static_cast<int>(rng() % 5);
   if (kind == 0) {
@@ -80,12 +90,11 @@ TEST_CASE("Mutated .msh files never crash or hang homesh", "[app][robustness]") 
   const char* env = std::getenv("HOMESH_MUTANTS");
   const int per_base = env ? std::atoi(env) : 40;
   std::vector<std::string> bases;
-  for (const char* flags :
-       {"-format msh22", "-format msh41", "-format msh22 -bin", "-format msh41 -bin",
-        "-format msh41 -order 2"}) {
+  for (const char* flags : {"-format msh22", "-format msh41", "-format msh22 -bin",
+                            "-format msh41 -bin", "-format msh41 -order 2"}) {
     const std::string base = dir / ("base" + std::to_string(bases.size()) + ".msh");
-    const auto r = run_command("gmsh " + geo + "plate_hole.geo -2 -clscale 4 " + flags + " -o " +
-                               base);
+    const auto r =
+        run_command("gmsh " + geo + "plate_hole.geo -2 -clscale 4 " + flags + " -o " + base);
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
     bases.push_back(read(base));
@@ -100,12 +109,14 @@ TEST_CASE("Mutated .msh files never crash or hang homesh", "[app][robustness]") 
           run_command("timeout 60 " + homesh_binary + " -q " + path + " " + dir / "out.msh");
       INFO("mutant " << ran << ":\n" << r.output);
       if (r.exit_code != 0 && r.exit_code != 1 && std::getenv("HOMESH_MUTANT_KEEP"))
-        std::filesystem::copy_file(path, std::string(std::getenv("HOMESH_MUTANT_KEEP")) + "/mutant" +
-                                             std::to_string(ran) + ".msh",
+        std::filesystem::copy_file(path,
+                                   std::string(std::getenv("HOMESH_MUTANT_KEEP")) + "/mutant" +
+                                       std::to_string(ran) + ".msh",
                                    std::filesystem::copy_options::overwrite_existing);
       REQUIRE((r.exit_code == 0 || r.exit_code == 1));
       if (r.exit_code == 1) {
-        REQUIRE_THAT(r.output, Catch::StartsWith("homesh: error: ") || Catch::Contains("\nhomesh: error: "));
+        REQUIRE_THAT(r.output,
+                     Catch::StartsWith("homesh: error: ") || Catch::Contains("\nhomesh: error: "));
         ++errors;
       }
       ++ran;

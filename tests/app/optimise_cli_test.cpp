@@ -19,16 +19,19 @@ const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
 TEST_CASE("optimise: NACA-7526 with boundary layers at p = 3, worst element better", "[app]") {
   const std::string out = "/tmp/homesh_optimise_naca.msh";
   const auto r = run_homesh(
-      geo + "naca.geo -m mesh "
-            "-m layers:walls=aerofoil:n=15:first=1e-3:ratio=1.2:normals=multi:fan=5:fan_angle=320 "
-            "-m curve:p=3 -m optimise:threshold=0.999 -m quality " + out);
+      geo +
+      "naca.geo -m mesh "
+      "-m layers:walls=aerofoil:n=15:first=1e-3:ratio=1.2:normals=multi:fan=5:fan_angle=320 "
+      "-m curve:p=3 -m optimise:threshold=0.999 -m quality " +
+      out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   std::smatch m;
   REQUIRE(std::regex_search(
       r.output, m,
-      std::regex(R"(optimise: (\d+) patches around (\d+) elements below minJ/maxJ \S+, (\d+) kept, )"
-                 R"(\d+ sweeps: worst minJ/maxJ (\d\.\d+) -> (\d\.\d+), (\d+) below, (\S+) s)")));
+      std::regex(
+          R"(optimise: (\d+) patches around (\d+) elements below minJ/maxJ \S+, (\d+) kept, )"
+          R"(\d+ sweeps: worst minJ/maxJ (\d\.\d+) -> (\d\.\d+), (\d+) below, (\S+) s)")));
   const int patches = std::stoi(m[1]), kept = std::stoi(m[3]);
   const double before = std::stod(m[4]), after = std::stod(m[5]);
   CHECK(patches > 0);

@@ -22,9 +22,9 @@ struct Run {
 Run run_apart(const std::string& env, const std::string& geo, const std::string& args) {
   const homesh::test::TempDir dir;
   const std::string err_file = dir / "homesh.err";
-  const auto r = homesh::test::run_command("(" + env + " " + HOMESH_BINARY + " " +
-                                           HOMESH_SOURCE_DIR + "/geo/" + geo + " " + args +
-                                           " 2>" + err_file + ")");
+  const auto r =
+      homesh::test::run_command("(" + env + " " + HOMESH_BINARY + " " + HOMESH_SOURCE_DIR +
+                                "/geo/" + geo + " " + args + " 2>" + err_file + ")");
   std::ifstream in(err_file);
   std::stringstream err;
   err << in.rdbuf();
@@ -85,8 +85,8 @@ TEST_CASE("progress: crystal growth shows its phases and Lloyd's iterations", "[
   const Run r = run_apart("HOMESH_PROGRESS=1", "plate_hole.geo", "-m voronoi:lloyd=2");
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
-  REQUIRE(r.err.rfind("\rhomesh: stage 1/1 voronoi | phase 0/3 Lloyd's iteration on the seeds", 0) ==
-          0);
+  REQUIRE(r.err.rfind("\rhomesh: stage 1/1 voronoi | phase 0/3 Lloyd's iteration on the seeds",
+                      0) == 0);
   REQUIRE(r.err.find("| iteration 1/2") != std::string::npos);
   // Later phases are drawn only if 0.1 s have passed (not on this small case);
   // the line is erased at the end.
@@ -96,10 +96,12 @@ TEST_CASE("progress: crystal growth shows its phases and Lloyd's iterations", "[
 }
 
 TEST_CASE("progress: curving shows the share of the boundary motion reached", "[app]") {
-  const Run r = run_apart("HOMESH_PROGRESS=1", "plate_hole.geo", "-m mesh -m curve:p=3:increments=4");
+  const Run r =
+      run_apart("HOMESH_PROGRESS=1", "plate_hole.geo", "-m mesh -m curve:p=3:increments=4");
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
-  REQUIRE(r.err.rfind("\rhomesh: stage 2/2 curve | boundary motion 0 % done, solve 1\033[K", 0) == 0);
+  REQUIRE(r.err.rfind("\rhomesh: stage 2/2 curve | boundary motion 0 % done, solve 1\033[K", 0) ==
+          0);
   REQUIRE(r.err.size() >= 4);
   REQUIRE(r.err.substr(r.err.size() - 4) == "\r\033[K");
 }

@@ -5,11 +5,11 @@
 #include <fstream>
 #include <regex>
 
-#include "gmsh/read_model.h"
-#include "gmsh/write_model.h"
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
 #include "../support/temp_dir.h"
+#include "gmsh/read_model.h"
+#include "gmsh/write_model.h"
 
 using homesh::test::run_homesh;
 using homesh::test::TempDir;
@@ -45,7 +45,8 @@ std::string write_invalid_mesh(const TempDir& dir) {
 TEST_CASE("quality stage: certified validity, views and a report", "[app]") {
   const TempDir dir;
   const std::string out = dir / "quality.msh";
-  const auto r = run_homesh(geo + "plate_hole.geo -m mesh -m order:p=3 -m quality:measures=Q4,Q6 " + out);
+  const auto r =
+      run_homesh(geo + "plate_hole.geo -m mesh -m order:p=3 -m quality:measures=Q4,Q6 " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
@@ -71,7 +72,8 @@ TEST_CASE("an invalid mesh is never written silently", "[app]") {
   INFO(r.output);
   REQUIRE(r.exit_code != 0);
   REQUIRE(std::regex_search(r.output, std::regex(R"(validity: [1-9]\d* invalid of)")));
-  REQUIRE(r.output.find("not certified valid (keep them with --keep-invalid)") != std::string::npos);
+  REQUIRE(r.output.find("not certified valid (keep them with --keep-invalid)") !=
+          std::string::npos);
   REQUIRE_FALSE(std::ifstream(out).good());
   r = run_homesh("--keep-invalid " + in + " " + out);
   REQUIRE(r.exit_code == 0);

@@ -53,8 +53,8 @@ void require_error(const homesh::test::CommandResult& r, const std::string& says
 
 // One linear triangle mesh in MSH 2.2 with the given node tags and triangles.
 std::string msh22(const std::vector<std::string>& nodes, const std::vector<std::string>& elements) {
-  std::string s = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" + std::to_string(nodes.size()) +
-                  "\n";
+  std::string s =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" + std::to_string(nodes.size()) + "\n";
   for (const auto& n : nodes) s += n + "\n";
   s += "$EndNodes\n$Elements\n" + std::to_string(elements.size()) + "\n";
   for (const auto& e : elements) s += e + "\n";
@@ -82,12 +82,11 @@ TEST_CASE("The output path is checked before any work", "[app][robustness]") {
   // The input does not exist either: the output's error comes first, before reading.
   auto r = run_homesh(dir / "nosuch.geo -m mesh " + dir / "missing/out.msh");
   require_error(r, "missing");
-  REQUIRE_THAT(r.output, Catch::Contains("No such file or directory") &&
-                             !Catch::Contains("nosuch.geo"));
+  REQUIRE_THAT(r.output,
+               Catch::Contains("No such file or directory") && !Catch::Contains("nosuch.geo"));
   fs::create_directory(dir / "folder.msh");
   require_error(run_homesh(dir / "nosuch.geo " + dir / "folder.msh"), "is a folder");
-  require_error(run_homesh(dir / "nosuch.geo " + dir / "out.vtk"),
-                "homesh writes .msh files only");
+  require_error(run_homesh(dir / "nosuch.geo " + dir / "out.vtk"), "homesh writes .msh files only");
 }
 
 TEST_CASE("homesh --version names homesh's and Gmsh's versions", "[app][robustness]") {
@@ -183,8 +182,8 @@ TEST_CASE("Hostile .msh files: tags, missing nodes, dropped and non-manifold ele
                        dir / "out.msh");
   };
   // Sparse, huge tags are fine: a compacting index, not an array sized by the largest tag.
-  auto r = run("sparse.msh", msh22({"1 0 0 0", "1000000000 1 0 0", "7 0 1 0"},
-                                   {"1 2 2 1 1 1 1000000000 7"}));
+  auto r = run("sparse.msh",
+               msh22({"1 0 0 0", "1000000000 1 0 0", "7 0 1 0"}, {"1 2 2 1 1 1 1000000000 7"}));
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   REQUIRE_THAT(r.output, Catch::Contains("1 triangles"));
@@ -198,8 +197,9 @@ TEST_CASE("Hostile .msh files: tags, missing nodes, dropped and non-manifold ele
           "$EndElements\n");
   require_error(r, "sparse41.msh: Gmsh's reader crashed on it");
 
-  require_error(run("negative.msh", msh22({"-1 0 0 0", "2 1 0 0", "3 0 1 0"}, {"1 2 2 1 1 -1 2 3"})),
-                "negative.msh");
+  require_error(
+      run("negative.msh", msh22({"-1 0 0 0", "2 1 0 0", "3 0 1 0"}, {"1 2 2 1 1 -1 2 3"})),
+      "negative.msh");
   require_error(run("missing.msh", msh22(nodes, {"1 2 2 1 1 1 2 9"})), "missing.msh");
   // A linear and a quadratic triangle in one entity: Gmsh keeps one kind only.
   require_error(run("mixed.msh", msh22({"1 0 0 0", "2 1 0 0", "3 0 1 0", "4 1 1 0", "5 0.5 0 0",
@@ -207,10 +207,10 @@ TEST_CASE("Hostile .msh files: tags, missing nodes, dropped and non-manifold ele
                                        {"1 2 2 1 1 1 2 3", "2 9 2 1 1 2 4 3 8 9 6"})),
                 "declares 2 elements, but Gmsh read 1");
   // Three triangles on the edge 1-2.
-  require_error(run("nonmanifold.msh",
-                    msh22({"1 0 0 0", "2 1 0 0", "3 0 1 0", "4 0.5 2 0", "5 0.2 3 0"},
-                          {"1 2 2 1 1 1 2 3", "2 2 2 1 1 1 2 4", "3 2 2 1 1 1 2 5"})),
-                "non-manifold");
+  require_error(
+      run("nonmanifold.msh", msh22({"1 0 0 0", "2 1 0 0", "3 0 1 0", "4 0.5 2 0", "5 0.2 3 0"},
+                                   {"1 2 2 1 1 1 2 3", "2 2 2 1 1 1 2 4", "3 2 2 1 1 1 2 5"})),
+      "non-manifold");
   // MSH 4.1 with an element naming a negative node: Gmsh's reader crashes on it.
   r = run("negative41.msh",
           "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 1 0\n1 0 0 0 1 1 0 0 0\n"
@@ -274,8 +274,8 @@ TEST_CASE("kill -9 while writing keeps the old output and the next run removes t
     REQUIRE(pid >= 0);
     if (pid == 0) {
       const std::string input = geo + "naca.geo";
-      execl(homesh_binary.c_str(), "homesh", "-q", input.c_str(), "-m", "mesh", "-m",
-            "order:p=6", out.c_str(), static_cast<char*>(nullptr));
+      execl(homesh_binary.c_str(), "homesh", "-q", input.c_str(), "-m", "mesh", "-m", "order:p=6",
+            out.c_str(), static_cast<char*>(nullptr));
       _exit(127);
     }
     int status = 0;

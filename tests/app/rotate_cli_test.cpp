@@ -6,10 +6,10 @@
 #include <cmath>
 #include <regex>
 
-#include "gmsh/read_model.h"
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
 #include "../support/temp_dir.h"
+#include "gmsh/read_model.h"
 
 using homesh::test::run_homesh;
 
@@ -26,8 +26,8 @@ TEST_CASE("rotate: the plate's hole turns 10 degrees, the output is that state, 
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   std::smatch m;
-  REQUIRE(std::regex_search(r.output, m,
-                            std::regex(R"(rotate: theta_max = (\d+) deg, mean CG iterations (\d+))")));
+  REQUIRE(std::regex_search(
+      r.output, m, std::regex(R"(rotate: theta_max = (\d+) deg, mean CG iterations (\d+))")));
   REQUIRE(m[1] == "10");
   REQUIRE(std::stoi(m[2]) > 0);
   // The centre fitted to the hole's nodes is the hole's centre.
@@ -59,8 +59,8 @@ TEST_CASE("rotate: the plate's hole turns 10 degrees, the output is that state, 
 
 namespace {
 int theta_max_on_fig413(const std::string& rotate_options) {
-  const auto r = run_homesh(geo + "plate_hole_fig413.geo -m mesh -m curve:p=2 -m rotate:" +
-                            rotate_options);
+  const auto r =
+      run_homesh(geo + "plate_hole_fig413.geo -m mesh -m curve:p=2 -m rotate:" + rotate_options);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   std::smatch m;

@@ -165,8 +165,7 @@ TEST_CASE("voronoi: seeds and metric from files, errors naming file and line", "
         std::string::npos);
   r = run_homesh(geo + "plate_hole.geo -m voronoi:front=rows " + out);
   CHECK(r.exit_code != 0);
-  CHECK(r.output.find("option front=rows: not an integer nor 'all'") !=
-        std::string::npos);
+  CHECK(r.output.find("option front=rows: not an integer nor 'all'") != std::string::npos);
 }
 
 TEST_CASE("voronoi: front rows, Lloyd's iteration and smoothing make triangles better than Gmsh's",

@@ -73,7 +73,8 @@ std::string in_child_with_size_limit(rlim_t bytes, Body body) {
   close(fds[1]);
   std::string said;
   char buf[512];
-  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;) said.append(buf, static_cast<std::size_t>(n));
+  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;)
+    said.append(buf, static_cast<std::size_t>(n));
   close(fds[0]);
   int status = 0;
   waitpid(pid, &status, 0);
@@ -138,8 +139,8 @@ TEST_CASE("A write past the file-size limit fails naming the cause and the old f
     f.append(std::string(100000, 'x'));
     f.commit();
   });
-  REQUIRE_THAT(said, Catch::Contains("cannot write '" + target + "'") &&
-                         Catch::Contains("File too large"));
+  REQUIRE_THAT(
+      said, Catch::Contains("cannot write '" + target + "'") && Catch::Contains("File too large"));
   REQUIRE(read(target) == "the user's good file");
   REQUIRE(others(dir.path(), "out.msh").empty());
 }
@@ -175,8 +176,7 @@ TEST_CASE("A temporary file whose writer died is removed by the next writer, a l
           "[core][atomic_file]") {
   const homesh::test::TempDir dir;
   const std::string target = dir.path() + "/out.msh";
-  const std::string stale =
-      dir.path() + "/.out.msh.tmp" + std::to_string(dead_pid()) + ".msh";
+  const std::string stale = dir.path() + "/.out.msh.tmp" + std::to_string(dead_pid()) + ".msh";
   const std::string unrelated = dir.path() + "/.out.msh.tmpabc.msh";
   write_plain(stale, "left by a kill -9");
   write_plain(unrelated, "not homesh's naming");

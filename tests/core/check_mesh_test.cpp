@@ -35,8 +35,8 @@ TEST_CASE("check_mesh accepts a good mesh and names each defect", "[core]") {
 
   Mesh flat = square();
   flat.tri.col(1) << 0, 4, 1;  // (0,0), (0.5,0), (1,0): collinear
-  REQUIRE_THROWS_WITH(check_mesh(flat, "in.msh"), Catch::Contains("triangle 2") &&
-                                                      Catch::Contains("zero area"));
+  REQUIRE_THROWS_WITH(check_mesh(flat, "in.msh"),
+                      Catch::Contains("triangle 2") && Catch::Contains("zero area"));
 
   Mesh repeated = square();
   repeated.tri.col(1) << 0, 2, 2;

@@ -70,8 +70,7 @@ TEST_CASE("raise_order node count is V + (p-1) E + (p-1)(p-2)/2 T", "[core][rais
   }
 }
 
-TEST_CASE("raise_order shares edge nodes between triangles and with lines",
-          "[core][raise_order]") {
+TEST_CASE("raise_order shares edge nodes between triangles and with lines", "[core][raise_order]") {
   const Mesh m = fan();
   for (int p = 2; p <= 8; ++p) {
     INFO("p = " << p);

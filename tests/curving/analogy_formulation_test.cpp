@@ -27,8 +27,9 @@ Mesh triangle() {
 // against the expected ones.
 void check_lame(const ElasticityCoefficients& c, const FormulationParams& p, double lambda,
                 double mu) {
-  const int nq = int(tabulate_element(2, stiffness_quadrature_degree(2, p.assembly.quadrature_margin))
-                         .rule.points.cols());
+  const int nq =
+      int(tabulate_element(2, stiffness_quadrature_degree(2, p.assembly.quadrature_margin))
+              .rule.points.cols());
   for (int k = 0; k < nq; ++k) {
     CAPTURE(k);
     const QuadraturePoint q{0, k, Eigen::Vector2d::Zero()};

@@ -96,7 +96,8 @@ TEST_CASE("every formulation curves a quarter annulus onto its circles, valid", 
     REQUIRE(mesh_validity(r.mesh).invalid == 0);
     double off_circle = 0;
     for (int i = 0; i < a.m.num_nodes(); ++i)
-      if (a.prescribed[i]) off_circle = std::max(off_circle, (r.mesh.x.col(i) - a.target.col(i)).norm());
+      if (a.prescribed[i])
+        off_circle = std::max(off_circle, (r.mesh.x.col(i) - a.target.col(i)).norm());
     REQUIRE(off_circle < 1e-12);
     REQUIRE(r.worst_ratio > 0.5);
   }
@@ -108,8 +109,8 @@ TEST_CASE("on a straight mesh the heat terms vanish: same result as plain", "[cu
   opt.increments = 1;
   const Mesh plain = deform_mesh(a.m, a.target, a.prescribed, opt).mesh;
   // Every added term is zero on the mesh the deformation starts from.
-  for (const char* name : {"heat_q17", "heat_q4", "force_q17", "stiff_q17", "metric_ideal",
-                           "metric_ref"}) {
+  for (const char* name :
+       {"heat_q17", "heat_q4", "force_q17", "stiff_q17", "metric_ideal", "metric_ref"}) {
     CAPTURE(name);
     opt.formulation = name;
     const Mesh other = deform_mesh(a.m, a.target, a.prescribed, opt).mesh;
@@ -173,7 +174,8 @@ TEST_CASE("layers = k solves near the moving nodes only; enough layers give the 
   double off_target = 0, moved_outside = 0;
   for (int i = 0; i < a.m.num_nodes(); ++i) {
     const double d = (near.mesh.x.col(i) - a.m.x.col(i)).norm();
-    if (a.prescribed[i]) off_target = std::max(off_target, (near.mesh.x.col(i) - a.target.col(i)).norm());
+    if (a.prescribed[i])
+      off_target = std::max(off_target, (near.mesh.x.col(i) - a.target.col(i)).norm());
     if (!in_region[i]) moved_outside = std::max(moved_outside, d);
   }
   CHECK(off_target < 1e-12);

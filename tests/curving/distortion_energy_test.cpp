@@ -19,8 +19,7 @@ Eigen::Matrix2Xd straight(int p, const Eigen::Vector2d& a, const Eigen::Vector2d
                           const Eigen::Vector2d& c) {
   const Eigen::Matrix2Xd uv = reference_nodes(p);
   Eigen::Matrix2Xd X(2, uv.cols());
-  for (int k = 0; k < uv.cols(); ++k)
-    X.col(k) = a + uv(0, k) * (b - a) + uv(1, k) * (c - a);
+  for (int k = 0; k < uv.cols(); ++k) X.col(k) = a + uv(0, k) * (b - a) + uv(1, k) * (c - a);
   return X;
 }
 
@@ -32,7 +31,8 @@ TEST_CASE("distortion energy: 0 at the target, +infinity past det J = 0", "[curv
   const ElementTabulation tab = tabulate_element(3, 6);
   const DistortionEnergyOptions opt;
   // Any equilateral element, any size, is the ideal: E = 0.
-  const Eigen::Matrix2Xd eq = straight(3, {2, 1}, {2 + 1e-3, 1}, {2 + 0.5e-3, 1 + 0.5e-3 * std::sqrt(3.0)});
+  const Eigen::Matrix2Xd eq =
+      straight(3, {2, 1}, {2 + 1e-3, 1}, {2 + 0.5e-3, 1 + 0.5e-3 * std::sqrt(3.0)});
   CHECK(distortion_energy(eq, tab, kIdeal, opt) == Approx(0).margin(1e-12));
   // A thin straight element is 0 against its own straight shape, large against the ideal.
   const Eigen::Matrix2Xd thin = straight(3, {0, 0}, {1, 0}, {0.4, 1e-3});

@@ -24,9 +24,10 @@ Mesh triangle(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::V
 
 }  // namespace
 
-TEST_CASE("element shape quality: 1 for the equilateral element, sqrt(3)/2 for the right "
-          "isosceles one, blind to size and rotation",
-          "[curving]") {
+TEST_CASE(
+    "element shape quality: 1 for the equilateral element, sqrt(3)/2 for the right "
+    "isosceles one, blind to size and rotation",
+    "[curving]") {
   for (int p : {1, 2, 3}) {
     CAPTURE(p);
     const ElementDistortion eq =

@@ -43,7 +43,8 @@ Case read_case() {
   REQUIRE((word == "nodes" && n == 24));
   m.x.resize(2, n);
   c.reference.resize(2, n);
-  for (int i = 0; i < n; ++i) next() >> m.x(0, i) >> m.x(1, i) >> c.reference(0, i) >> c.reference(1, i);
+  for (int i = 0; i < n; ++i)
+    next() >> m.x(0, i) >> m.x(1, i) >> c.reference(0, i) >> c.reference(1, i);
   next() >> word >> t;
   REQUIRE((word == "triangles" && t == 8));
   m.tri.resize(6, t);
@@ -83,7 +84,8 @@ TEST_CASE("hole translation (Sec 4.2.3): the displacement matches an independent
   const Case c = read_case();
   const Mesh& m = c.mesh;
   int free_nodes = 0;
-  for (int i = 0; i < m.num_nodes(); ++i) free_nodes += !on_hole(m.x.col(i)) && !on_plate_edge(m.x.col(i));
+  for (int i = 0; i < m.num_nodes(); ++i)
+    free_nodes += !on_hole(m.x.col(i)) && !on_plate_edge(m.x.col(i));
   REQUIRE(free_nodes == 8);  // the mid-nodes of the edges joining hole and plate corners
 
   // Both codes integrate with degree-12 rules here; the curve stage's default
@@ -96,8 +98,8 @@ TEST_CASE("hole translation (Sec 4.2.3): the displacement matches an independent
       const double diff = (u.col(i) - c.reference.col(i)).norm();
       worst = std::max(worst, diff);
       if (!on_hole(m.x.col(i)) && !on_plate_edge(m.x.col(i)))
-        mean += std::abs(u.col(i).norm() - c.reference.col(i).norm()) /
-                c.reference.col(i).norm() / free_nodes;
+        mean += std::abs(u.col(i).norm() - c.reference.col(i).norm()) / c.reference.col(i).norm() /
+                free_nodes;
     }
     INFO("mean relative difference of |u| " << mean << "\nworst nodal difference " << worst);
     CHECK(mean < 0.03);  // the thesis' agreement with Abaqus

@@ -18,10 +18,8 @@ namespace {
 
 // The unit square, n by n cells, at order p, straight-sided (every minJ/maxJ 1).
 Mesh square(int n, int p) {
-  return raise_order(test::channel_mesh(n, n, [](double s, double t) {
-                       return Eigen::Vector2d(s, t);
-                     }),
-                     p);
+  return raise_order(
+      test::channel_mesh(n, n, [](double s, double t) { return Eigen::Vector2d(s, t); }), p);
 }
 
 // Moves every interior node the order raising added by up to `amount` times the cell size,
@@ -107,8 +105,8 @@ TEST_CASE("optimise: a thin curved layer's bulge is spread into the elements abo
     o.threshold = 0.95;
     const OptimiseResult r = optimise_mesh(curved.mesh, boundary_nodes(curved.mesh), o);
     const MeshValidity after = mesh_validity(r.mesh);
-    INFO("worst " << r.worst_before << " -> " << r.worst_after << ", " << r.patches
-                  << " patches, " << r.accepted << " kept, " << r.sweeps << " sweeps");
+    INFO("worst " << r.worst_before << " -> " << r.worst_after << ", " << r.patches << " patches, "
+                  << r.accepted << " kept, " << r.sweeps << " sweeps");
     REQUIRE(after.invalid == 0);
     CHECK(r.worst_after == Approx(after.worst));
     // Measured 0.849 -> 0.954 (p = 2), 0.883 -> 0.935 (p = 3), 0.848 -> 0.936 (p = 4).
@@ -118,8 +116,7 @@ TEST_CASE("optimise: a thin curved layer's bulge is spread into the elements abo
   }
 }
 
-TEST_CASE("optimise: an invalid element is left alone, the rest still optimised",
-          "[curving]") {
+TEST_CASE("optimise: an invalid element is left alone, the rest still optimised", "[curving]") {
   Mesh m = square(8, 2);
   perturb(m, 0.3, 1.0 / 8, 2);
   const MeshValidity start = mesh_validity(m);

@@ -42,7 +42,7 @@ Annulus annulus(int nt, int nr, double a, double b, int p, bool curved = true) {
   for (int i = 0; i < s.m.num_nodes(); ++i) {
     const double r = s.m.x.col(i).norm();
     // Edge nodes of a chord lie inside the circle by at most the sagitta.
-    const bool in = r < a * (1 + 1e-12), out = r > b * std::cos(M_PI / nt) - 1e-12;
+    const bool in = r<a*(1 + 1e-12), out = r> b * std::cos(M_PI / nt) - 1e-12;
     if (curved && in) s.m.x.col(i) *= a / r;
     if (curved && out) s.m.x.col(i) *= b / r;
     s.inner.push_back(in);

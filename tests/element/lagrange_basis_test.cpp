@@ -1,7 +1,7 @@
 #include "element/lagrange_basis.h"
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
@@ -72,7 +72,8 @@ TEST_CASE("LagrangeBasis is the Kronecker delta at its nodes", "[element][lagran
     const LagrangeBasis basis(p);
     CHECK(basis.nodes() == reference_nodes(p));
     const Eigen::MatrixXd N = basis.tabulate_values(basis.nodes());
-    const double error = (N - Eigen::MatrixXd::Identity(basis.size(), basis.size())).cwiseAbs().maxCoeff();
+    const double error =
+        (N - Eigen::MatrixXd::Identity(basis.size(), basis.size())).cwiseAbs().maxCoeff();
     CHECK(error < 1e-13);
   }
 }

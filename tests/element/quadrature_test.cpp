@@ -1,7 +1,7 @@
 #include "element/quadrature.h"
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <utility>
 

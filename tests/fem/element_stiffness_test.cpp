@@ -55,15 +55,15 @@ TEST_CASE("element_stiffness is symmetric with exactly the 3 rigid motions in it
       const ElementTabulation tab = tabulate_element(p, stiffness_quadrature_degree(p, 2));
       const Eigen::Index nq = tab.rule.weights.size();
       const Eigen::Matrix2Xd X = element_nodes(corners(), p, curve / p, 7u + p);
-      const Eigen::MatrixXd K = element_stiffness(X, tab, Eigen::VectorXd::Constant(nq, lame.lambda),
-                                                  Eigen::VectorXd::Constant(nq, lame.mu));
+      const Eigen::MatrixXd K =
+          element_stiffness(X, tab, Eigen::VectorXd::Constant(nq, lame.lambda),
+                            Eigen::VectorXd::Constant(nq, lame.mu));
       CHECK((K - K.transpose()).cwiseAbs().maxCoeff() < 1e-13 * K.cwiseAbs().maxCoeff());
       Eigen::Matrix2d rotation;
       rotation << 0.0, -1.0, 1.0, 0.0;
-      for (const Eigen::VectorXd& rigid :
-           {linear_field(X, Eigen::Matrix2d::Zero(), {1.0, 0.0}),
-            linear_field(X, Eigen::Matrix2d::Zero(), {0.0, 1.0}),
-            linear_field(X, rotation, {0.2, -0.1})})
+      for (const Eigen::VectorXd& rigid : {linear_field(X, Eigen::Matrix2d::Zero(), {1.0, 0.0}),
+                                           linear_field(X, Eigen::Matrix2d::Zero(), {0.0, 1.0}),
+                                           linear_field(X, rotation, {0.2, -0.1})})
         CHECK((K * rigid).norm() < 1e-12 * K.norm() * rigid.norm());
       const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
       CHECK(std::abs(ev(2)) < 1e-12 * ev.maxCoeff());
@@ -80,7 +80,8 @@ TEST_CASE("element_stiffness gives the exact strain energy of a linear field, p 
   Eigen::Matrix2d G;
   G << 0.3, -0.7, 0.2, 0.45;
   const Eigen::Matrix2d eps = 0.5 * (G + G.transpose());
-  const double density = 2.0 * lame.mu * eps.squaredNorm() + lame.lambda * eps.trace() * eps.trace();
+  const double density =
+      2.0 * lame.mu * eps.squaredNorm() + lame.lambda * eps.trace() * eps.trace();
   for (int p = 1; p <= 6; ++p) {
     INFO("p = " << p);
     const ElementTabulation tab = tabulate_element(p, stiffness_quadrature_degree(p, 0));
@@ -102,8 +103,8 @@ TEST_CASE("element_stiffness of the linear triangle is |e| B^T D B", "[fem][elem
   const Eigen::MatrixXd K = element_stiffness(X, tab, Eigen::VectorXd::Constant(1, lame.lambda),
                                               Eigen::VectorXd::Constant(1, lame.mu));
   // Constant-strain triangle: dN_i/dx = (y_j - y_k) / 2A, dN_i/dy = (x_k - x_j) / 2A.
-  const double two_area = (X(0, 1) - X(0, 0)) * (X(1, 2) - X(1, 0)) -
-                          (X(0, 2) - X(0, 0)) * (X(1, 1) - X(1, 0));
+  const double two_area =
+      (X(0, 1) - X(0, 0)) * (X(1, 2) - X(1, 0)) - (X(0, 2) - X(0, 0)) * (X(1, 1) - X(1, 0));
   Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();  // Voigt xx, yy, 2xy
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;

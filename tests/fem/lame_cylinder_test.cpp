@@ -21,9 +21,9 @@ struct RadialField {
   double A, B;
 };
 constexpr double kUa = 0.01, kUb = 0.004;
-constexpr RadialField kExact{(kUb * kOuter - kUa * kInner) / (kOuter * kOuter - kInner * kInner),
-                       kInner * kOuter * (kUa * kOuter - kUb * kInner) /
-                           (kOuter * kOuter - kInner * kInner)};
+constexpr RadialField kExact{
+    (kUb * kOuter - kUa * kInner) / (kOuter * kOuter - kInner * kInner),
+    kInner* kOuter*(kUa* kOuter - kUb * kInner) / (kOuter * kOuter - kInner * kInner)};
 
 Eigen::Vector2d exact(const Eigen::Vector2d& x) {
   return (kExact.A + kExact.B / x.squaredNorm()) * x;

@@ -3,8 +3,8 @@
 #include "fem/linear_solver.h"
 
 #include <Eigen/Dense>
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <map>
 #include <string>
 #include <vector>
@@ -89,8 +89,7 @@ TEST_CASE("cholmod is built in and agrees with ldlt", "[fem][linear_solver]") {
   CHECK((x - solve_linear_system(sys.K, sys.b).x).norm() < 1e-12 * x.norm());
 }
 
-TEST_CASE("apply_dirichlet keeps K symmetric and solves the reduced system",
-          "[fem][dirichlet]") {
+TEST_CASE("apply_dirichlet keeps K symmetric and solves the reduced system", "[fem][dirichlet]") {
   Mesh m = unit_square(2, 2);
   warp(m, 0.04);
   ElasticityCoefficients c;

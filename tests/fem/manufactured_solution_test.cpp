@@ -23,8 +23,9 @@ Eigen::Vector2d exact(const Eigen::Vector2d& p) {
 Eigen::Matrix2d exact_gradient(const Eigen::Vector2d& p) {
   const double x = p(0), y = p(1);
   Eigen::Matrix2d G;
-  G << M_PI * std::cos(M_PI * x) * std::sin(M_PI * y), M_PI * std::sin(M_PI * x) * std::cos(M_PI * y),
-      std::exp(x) * std::cos(y), -std::exp(x) * std::sin(y);
+  G << M_PI * std::cos(M_PI * x) * std::sin(M_PI * y),
+      M_PI * std::sin(M_PI * x) * std::cos(M_PI * y), std::exp(x) * std::cos(y),
+      -std::exp(x) * std::sin(y);
   return G;
 }
 
@@ -32,9 +33,9 @@ Eigen::Vector2d body_force(const Lame& l, const Eigen::Vector2d& p) {
   const double x = p(0), y = p(1), pi2 = M_PI * M_PI;
   const double ss = std::sin(M_PI * x) * std::sin(M_PI * y);
   const Eigen::Vector2d laplacian(-2.0 * pi2 * ss, 0.0);
-  const Eigen::Vector2d grad_div(-pi2 * ss - std::exp(x) * std::sin(y),
-                                 pi2 * std::cos(M_PI * x) * std::cos(M_PI * y) -
-                                     std::exp(x) * std::cos(y));
+  const Eigen::Vector2d grad_div(
+      -pi2 * ss - std::exp(x) * std::sin(y),
+      pi2 * std::cos(M_PI * x) * std::cos(M_PI * y) - std::exp(x) * std::cos(y));
   return -(l.mu * laplacian + (l.lambda + l.mu) * grad_div);
 }
 

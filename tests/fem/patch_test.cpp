@@ -76,8 +76,7 @@ TEST_CASE("patch test with varying E, nu and temperature balanced by a body forc
     warp(m, 0.04);
     ElasticityOptions options;
     options.assembly.quadrature_margin = p;
-    const ElasticitySolution s =
-        solve_elasticity(m, c, boundary_condition(m, boundary), options);
+    const ElasticitySolution s = solve_elasticity(m, c, boundary_condition(m, boundary), options);
     CHECK(max_error(m, s.u) < 1e-12);
   }
 }

@@ -43,7 +43,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ctx.log.quiet = true;
     homesh::load_input(path, ctx);
   } catch (const homesh::Error& e) {
-    if (std::string(e.what()).find(path) == std::string::npos) __builtin_trap();  // must name the file
+    if (std::string(e.what()).find(path) == std::string::npos)
+      __builtin_trap();  // must name the file
   }
   return 0;
 }

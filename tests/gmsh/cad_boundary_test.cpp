@@ -5,9 +5,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "../support/gmsh_session.h"
 #include "core/raise_order.h"
 #include "gmsh/read_model.h"
-#include "../support/gmsh_session.h"
 
 using namespace homesh;
 

@@ -7,10 +7,10 @@
 #include <map>
 #include <random>
 
+#include "../support/gmsh_session.h"
 #include "gmsh/read_model.h"
 #include "gmsh/write_model.h"
 #include "quality/mesh_validity.h"
-#include "../support/gmsh_session.h"
 
 using namespace homesh;
 

@@ -49,7 +49,8 @@ TEST_CASE("read_msh_header refuses what is not a .msh and malformed counts", "[g
                       Catch::Contains("text.msh") && Catch::Contains("not a Gmsh .msh file"));
   std::ofstream(dir / "bad.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n-3\n";
   REQUIRE_THROWS_WITH(read_msh_header(dir / "bad.msh"), Catch::Contains("$Nodes"));
-  std::ofstream(dir / "crlf.msh") << "$MeshFormat\r\n2.2 0 8\r\n$EndMeshFormat\r\n$Elements\r\n7\r\n";
+  std::ofstream(dir / "crlf.msh")
+      << "$MeshFormat\r\n2.2 0 8\r\n$EndMeshFormat\r\n$Elements\r\n7\r\n";
   const auto h = read_msh_header(dir / "crlf.msh");
   REQUIRE_FALSE(h.nodes);
   REQUIRE(h.elements == 7u);

@@ -4,12 +4,12 @@
 #include <fstream>
 #include <string>
 
+#include "../support/gmsh_session.h"
+#include "../support/temp_dir.h"
 #include "gmsh/read_model.h"
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
-#include "../support/gmsh_session.h"
-#include "../support/temp_dir.h"
 
 using namespace homesh;
 

@@ -37,7 +37,8 @@ TEST_CASE("edge flips raise the worst radius ratio and keep count and surfaces",
   for (int e = 0; e < 2; ++e) {
     CHECK((m.tri.col(e).array() == 1).any());
     CHECK((m.tri.col(e).array() == 3).any());
-    const Eigen::Vector2d a = m.x.col(m.tri(0, e)), b = m.x.col(m.tri(1, e)), c = m.x.col(m.tri(2, e));
+    const Eigen::Vector2d a = m.x.col(m.tri(0, e)), b = m.x.col(m.tri(1, e)),
+                          c = m.x.col(m.tri(2, e));
     CHECK((b - a)(0) * (c - a)(1) - (b - a)(1) * (c - a)(0) > 0);
   }
   CHECK(flip_edges(m) == 0);  // already the better diagonal

@@ -3,11 +3,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "../layers/layer_test_meshes.h"
 #include "core/error.h"
 #include "core/raise_order.h"
 #include "layers/radius_ratio.h"
 #include "quality/mesh_validity.h"
-#include "../layers/layer_test_meshes.h"
 
 using namespace homesh;
 
@@ -29,7 +29,9 @@ Mesh l_shape() {
 Mesh box_with_hole() {
   return test::grid_mesh(
       8, 8, 0.25, [](int i, int j) { return !(i >= 2 && i < 6 && j >= 2 && j < 6); },
-      [](const Eigen::Vector2d& p) { return p(0) > 0.4 && p(0) < 1.6 && p(1) > 0.4 && p(1) < 1.6; });
+      [](const Eigen::Vector2d& p) {
+        return p(0) > 0.4 && p(0) < 1.6 && p(1) > 0.4 && p(1) < 1.6;
+      });
 }
 
 // A rhombus with 17 deg tips (domain angle 343 deg) in a circle of radius 3.
@@ -87,7 +89,8 @@ TEST_CASE("layers around a circular hole: counts, depths, walls kept, valid", "[
     const Eigen::Vector2d w = b.x.col(line.wall_node);
     CHECK((line.direction - w.normalized()).norm() < 1e-14);
     for (int k = 1; k <= n; ++k)
-      CHECK((b.x.col(line.nodes[k]) - w).norm() == Approx(d[k] / std::cos(M_PI / 32)).epsilon(1e-12));
+      CHECK((b.x.col(line.nodes[k]) - w).norm() ==
+            Approx(d[k] / std::cos(M_PI / 32)).epsilon(1e-12));
   }
   // Layer k holds 2 E triangles; the input's triangles come first.
   for (int k = 0; k <= n; ++k)

@@ -10,8 +10,8 @@
 #include <functional>
 #include <map>
 #include <string>
-#include <vector>
 #include <utility>
+#include <vector>
 
 #include "core/mesh.h"
 #include "layers/insert_layers.h"
@@ -78,7 +78,8 @@ inline Mesh ring_mesh(const Eigen::Matrix2Xd& inner, const Eigen::Matrix2Xd& out
 }
 
 /// N points on the circle of radius r about c, counter-clockwise from angle 0.
-inline Eigen::Matrix2Xd circle(int n, double r, const Eigen::Vector2d& c = Eigen::Vector2d::Zero()) {
+inline Eigen::Matrix2Xd circle(int n, double r,
+                               const Eigen::Vector2d& c = Eigen::Vector2d::Zero()) {
   Eigen::Matrix2Xd p(2, n);
   for (int i = 0; i < n; ++i)
     p.col(i) = c + r * Eigen::Vector2d(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n));
@@ -180,11 +181,14 @@ inline Mesh channel_mesh(int nx, int ny,
     m.point_node.push_back(first);
     m.point_entity.push_back(c + 1);
   }
-  m.entities = {{0, 1, {}}, {0, 2, {}}, {0, 3, {}}, {0, 4, {}},
-                {1, 1, {1, -2}}, {1, 2, {2, -3}}, {1, 3, {3, -4}}, {1, 4, {4, -1}},
-                {2, 1, {1, 2, 3, 4}}};
-  m.physicals = {{1, 10, "wall", {1}}, {1, 11, "outlet", {2}}, {1, 12, "top", {3}},
-                 {1, 13, "inlet", {4}}, {2, 14, "fluid", {1}}};
+  m.entities = {{0, 1, {}},      {0, 2, {}},      {0, 3, {}},
+                {0, 4, {}},      {1, 1, {1, -2}}, {1, 2, {2, -3}},
+                {1, 3, {3, -4}}, {1, 4, {4, -1}}, {2, 1, {1, 2, 3, 4}}};
+  m.physicals = {{1, 10, "wall", {1}},
+                 {1, 11, "outlet", {2}},
+                 {1, 12, "top", {3}},
+                 {1, 13, "inlet", {4}},
+                 {2, 14, "fluid", {1}}};
   return m;
 }
 

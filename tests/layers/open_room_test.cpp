@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "../layers/layer_test_meshes.h"
 #include "core/error.h"
 #include "layers/front_split.h"
 #include "quality/mesh_validity.h"
-#include "../layers/layer_test_meshes.h"
 
 using namespace homesh;
 
@@ -20,7 +20,8 @@ TEST_CASE("available push: distance along d to the opposite edge's line (Fig 4.5
   m.tri << 0, 1, 2;
   CHECK(available_push(m, {0}, 0, Eigen::Vector2d(1, 1).normalized()) == Approx(std::sqrt(0.5)));
   CHECK(available_push(m, {0}, 0, Eigen::Vector2d(1, 0)) == Approx(1));
-  CHECK(available_push(m, {0}, 0, Eigen::Vector2d(-1, 0)) == std::numeric_limits<double>::infinity());
+  CHECK(available_push(m, {0}, 0, Eigen::Vector2d(-1, 0)) ==
+        std::numeric_limits<double>::infinity());
   CHECK(available_push(m, {0}, 1, Eigen::Vector2d(-1, 0)) == Approx(1));
 }
 
@@ -40,8 +41,7 @@ TEST_CASE("open room: the front of a circular hole pushed radially, capped, vali
   for (double push : {0.2, 2.5}) {
     CAPTURE(push);
     Eigen::Matrix2Xd target(2, 24);
-    for (int k = 0; k < 24; ++k)
-      target.col(k) = (1 + push) * m.x.col(loops[0].nodes[k]);
+    for (int k = 0; k < 24; ++k) target.col(k) = (1 + push) * m.x.col(loops[0].nodes[k]);
     const RoomResult r = open_room(s.mesh, moving, target, fixed);
     CHECK(mesh_validity(r.mesh).invalid == 0);
     if (push < 1) {

@@ -5,10 +5,10 @@
 #include <map>
 #include <utility>
 
+#include "../layers/layer_test_meshes.h"
 #include "layers/insert_layers.h"
 #include "layers/wall_loops.h"
 #include "quality/mesh_validity.h"
-#include "../layers/layer_test_meshes.h"
 
 using namespace homesh;
 
@@ -62,8 +62,8 @@ TEST_CASE("an open wall chains from one non-wall boundary line to another", "[la
   CHECK(w.edges() == 16);
   CHECK(w.nodes.front() == 0);
   CHECK(w.nodes.back() == 16);
-  CHECK(w.prev(0) == 17);         // (0, 1/6) on the inlet
-  CHECK(w.next(16) == 16 + 17);   // (4, 1/6) on the outlet
+  CHECK(w.prev(0) == 17);        // (0, 1/6) on the inlet
+  CHECK(w.next(16) == 16 + 17);  // (4, 1/6) on the outlet
   CHECK(m.line_entity[w.end_lines[0]] == 4);
   CHECK(m.line_entity[w.end_lines[1]] == 2);
   CHECK(w.curves.back() == 2);

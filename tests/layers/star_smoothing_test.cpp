@@ -35,7 +35,8 @@ TEST_CASE("star quality: the worst radius ratio around each node, -1 if one is c
 TEST_CASE("star smoothing: a squeezed node goes back towards its neighbours' centroid",
           "[layers]") {
   // Node 6 squeezed to 0.02 below the edge (0, 1): a nearly flat triangle there.
-  const Eigen::Vector2d edge_mid = (Eigen::Vector2d(1, 0) + Eigen::Vector2d(0.5, std::sqrt(0.75))) / 2;
+  const Eigen::Vector2d edge_mid =
+      (Eigen::Vector2d(1, 0) + Eigen::Vector2d(0.5, std::sqrt(0.75))) / 2;
   const Eigen::Vector2d squeezed = edge_mid * (1 - 0.02 / edge_mid.norm());
   Mesh m = hexagon(squeezed.x(), squeezed.y());
   const double before = star_quality(m)[6];

@@ -3,9 +3,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "../layers/layer_test_meshes.h"
 #include "core/error.h"
 #include "layers/wall_loops.h"
-#include "../layers/layer_test_meshes.h"
 
 using namespace homesh;
 
@@ -25,7 +25,9 @@ double signed_area(const Mesh& m, const WallLoop& loop) {
 Mesh box_with_hole() {
   return test::grid_mesh(
       4, 4, 0.5, [](int i, int j) { return !(i >= 1 && i <= 2 && j >= 1 && j <= 2); },
-      [](const Eigen::Vector2d& p) { return p(0) > 0.4 && p(0) < 1.6 && p(1) > 0.4 && p(1) < 1.6; });
+      [](const Eigen::Vector2d& p) {
+        return p(0) > 0.4 && p(0) < 1.6 && p(1) > 0.4 && p(1) < 1.6;
+      });
 }
 
 }  // namespace
@@ -58,7 +60,8 @@ TEST_CASE("wall normal: bisector and miter at straight, right and re-entrant nod
 
 TEST_CASE("wall normal: a fan of equal angles from one edge's normal to the other's", "[layers]") {
   const double half = 10 * M_PI / 180;  // domain angle 340 deg
-  const Eigen::Vector2d prev(-std::cos(half), std::sin(half)), next(-std::cos(half), -std::sin(half));
+  const Eigen::Vector2d prev(-std::cos(half), std::sin(half)),
+      next(-std::cos(half), -std::sin(half));
   NormalOptions opt;
   opt.multi = true;
   for (int fan : {3, 5, 7}) {
@@ -91,7 +94,8 @@ TEST_CASE("wall loops and normals of a circle: radial, the domain on the left", 
     REQUIRE(loop.nodes.size() == 24);
     const bool hole = m.x.col(loop.nodes[0]).norm() < 2;
     // The hole runs clockwise, the outer boundary counter-clockwise.
-    CHECK(signed_area(m, loop) == Approx(hole ? -12 * std::sin(2 * M_PI / 24) : 9 * 12 * std::sin(2 * M_PI / 24)));
+    CHECK(signed_area(m, loop) ==
+          Approx(hole ? -12 * std::sin(2 * M_PI / 24) : 9 * 12 * std::sin(2 * M_PI / 24)));
     const auto normals = wall_normals(m, loop);
     for (std::size_t i = 0; i < loop.nodes.size(); ++i) {
       const Eigen::Vector2d radial = m.x.col(loop.nodes[i]).normalized();
@@ -140,7 +144,8 @@ TEST_CASE("wall loops refuse unknown names and interfaces, chain open walls", "[
   // from (0, 0.5) to (2, 0.5) ending on the sides' other lines.
   Mesh open = m;
   for (int k = 0; k < open.num_lines(); ++k)
-    if (open.line_entity[k] == 2 && open.x(1, open.line(0, k)) != 0 && open.x(1, open.line(1, k)) != 0)
+    if (open.line_entity[k] == 2 && open.x(1, open.line(0, k)) != 0 &&
+        open.x(1, open.line(1, k)) != 0)
       open.line_entity[k] = 3;
   const auto chain = wall_loops(open, {2});
   REQUIRE(chain.size() == 1);

@@ -67,8 +67,7 @@ TEST_CASE("parsers read typed values and say why they refuse one", "[pipeline]")
   CHECK_FALSE(value(boolean(), "off"));
   CHECK(boolean().show(true) == "true");
   CHECK(refused(one_of({"a", "b", "c"}), "x") == "expected a, b or c");
-  CHECK(refused(choice<bool>({{"fixed", true}, {"free", false}}), "x") ==
-        "expected fixed or free");
+  CHECK(refused(choice<bool>({{"fixed", true}, {"free", false}}), "x") == "expected fixed or free");
   CHECK(choice<bool>({{"fixed", true}, {"free", false}}).show(false) == "free");
   CHECK(value(list(), "a,,b") == std::vector<std::string>{"a", "b"});
   CHECK(refused(list(one_of({"a", "b"})), "a,c") == "'c': expected a or b");
@@ -77,7 +76,8 @@ TEST_CASE("parsers read typed values and say why they refuse one", "[pipeline]")
   CHECK_FALSE(value(point_or("auto"), "auto"));
   CHECK(refused(point_or("auto"), "1") == "expected auto or two numbers x,y");
   CHECK(point_or("auto").show(std::nullopt) == "auto");
-  const Parser<int> odd = where<int>(integer(3, 99), [](const int& n) { return n % 2; }, "must be odd");
+  const Parser<int> odd = where<int>(
+      integer(3, 99), [](const int& n) { return n % 2; }, "must be odd");
   CHECK(refused(odd, "4") == "must be odd");
   CHECK(refused(odd, "1") == "out of range [3, 99]");
   CHECK(value(odd, "5") == 5);
@@ -97,7 +97,8 @@ struct Sample {
 OptionTable<Sample> sample_table() {
   OptionTable<Sample> t;
   t.add("p", &Sample::p, integer(1, 10), "order");
-  t.add("nu", [](Sample& s) -> double& { return s.inner.nu; }, real(-1, 0.5, "()"), "ratio");
+  t.add(
+      "nu", [](Sample& s) -> double& { return s.inner.nu; }, real(-1, 0.5, "()"), "ratio");
   t.add("vertices", &Sample::fixed, choice<bool>({{"fixed", true}, {"free", false}}), "held");
   t.check([](const Sample& s) { return s.p == 7 && s.fixed ? "p = 7 needs vertices=free" : ""; });
   return t;

@@ -12,10 +12,14 @@ namespace {
 // The affine maps from the reference triangle onto S0..S3 (bezier_subdivision.h).
 Eigen::Vector2d to_parent(int s, const Eigen::Vector2d& uv) {
   switch (s) {
-    case 0: return uv / 2;
-    case 1: return Eigen::Vector2d((1 + uv(0)) / 2, uv(1) / 2);
-    case 2: return Eigen::Vector2d(uv(0) / 2, (1 + uv(1)) / 2);
-    default: return Eigen::Vector2d((1 - uv(0)) / 2, (1 - uv(1)) / 2);
+    case 0:
+      return uv / 2;
+    case 1:
+      return Eigen::Vector2d((1 + uv(0)) / 2, uv(1) / 2);
+    case 2:
+      return Eigen::Vector2d(uv(0) / 2, (1 + uv(1)) / 2);
+    default:
+      return Eigen::Vector2d((1 - uv(0)) / 2, (1 - uv(1)) / 2);
   }
 }
 
@@ -63,8 +67,7 @@ TEST_CASE("subdivision: each piece is the polynomial on its sub-triangle", "[bez
   }
 }
 
-TEST_CASE("subdivision: the control net converges quadratically to the polynomial",
-          "[bezier]") {
+TEST_CASE("subdivision: the control net converges quadratically to the polynomial", "[bezier]") {
   // After L levels (triangles of size h = 2^-L) every coefficient is within
   // O(h^2) of the polynomial's value at its domain point: the error drops
   // towards 4x per level (3.3x to 3.6x here at levels 2 to 5; Dahmen 1986).

@@ -39,8 +39,7 @@ TEST_CASE("Bernstein basis: non-negative partition of unity, unit at the corners
   }
 }
 
-TEST_CASE("Bernstein basis: the coordinates have the domain points as coefficients",
-          "[bezier]") {
+TEST_CASE("Bernstein basis: the coordinates have the domain points as coefficients", "[bezier]") {
   // u = sum_ijk (j/d) B_ijk and v = sum_ijk (k/d) B_ijk (linear precision).
   std::mt19937 rng(2);
   for (int d = 1; d <= 10; ++d) {

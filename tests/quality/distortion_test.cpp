@@ -1,5 +1,7 @@
 // Distortion Theta = 1/Q - 1 (Eq 3.49) and the element distortion function f
 // (Eq 3.48).
+#include "quality/distortion.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -7,7 +9,6 @@
 #include "core/error.h"
 #include "element/quadrature.h"
 #include "measure_test_support.h"
-#include "quality/distortion.h"
 #include "quality/ideal_jacobian.h"
 
 namespace homesh {
@@ -52,8 +53,7 @@ TEST_CASE("f of a straight-sided element is Theta of its constant W, for any r",
   }
 }
 
-TEST_CASE("f of a curved element is the r-mean of Theta: positive, growing with r",
-          "[quality]") {
+TEST_CASE("f of a curved element is the r-mean of Theta: positive, growing with r", "[quality]") {
   const Eigen::Matrix2Xd X = test::curved_element(3);
   const ElementSampling rule(3, triangle_quadrature(8));
   for (const Measure& m : measures()) {
@@ -67,7 +67,8 @@ TEST_CASE("f of a curved element is the r-mean of Theta: positive, growing with 
     // Bounded by the largest Theta at the rule's points.
     double theta_max = 0.0;
     const ElementQuality q = element_quality(m, rule, X);
-    for (int i = 0; i < q.values.size(); ++i) theta_max = std::max(theta_max, distortion(q.values[i]));
+    for (int i = 0; i < q.values.size(); ++i)
+      theta_max = std::max(theta_max, distortion(q.values[i]));
     CHECK(f16 <= theta_max * (1 + 1e-12));
     // Scaling the element leaves f of the scale-invariant measures unchanged.
     if (m.invariance.scale) {
@@ -78,8 +79,7 @@ TEST_CASE("f of a curved element is the r-mean of Theta: positive, growing with 
 
 TEST_CASE("f with the thesis's element-max normalisation ignores constant W", "[quality]") {
   const ElementSampling rule(2, triangle_quadrature(4));
-  const Eigen::Matrix2Xd sheared =
-      test::straight_element(2, {0.0, 0.0}, {3.0, 0.0}, {2.5, 1.0});
+  const Eigen::Matrix2Xd sheared = test::straight_element(2, {0.0, 0.0}, {3.0, 0.0}, {2.5, 1.0});
   for (const char* name : {"Q2", "Q3", "Q4", "Q5", "Q17"}) {
     INFO(name);
     const Measure& m = measure(name);

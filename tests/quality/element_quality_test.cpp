@@ -1,13 +1,14 @@
 // Measures over whole elements: consistency with the pointwise kernels, Q1,
 // label invariance under relabelling, the thesis's element-max normalisation.
-#include <catch2/catch.hpp>
+#include "quality/element_quality.h"
+
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "core/error.h"
 #include "element/reference_nodes.h"
 #include "measure_test_support.h"
-#include "quality/element_quality.h"
 #include "quality/ideal_jacobian.h"
 #include "quality/jacobian_variation.h"
 
@@ -86,8 +87,7 @@ TEST_CASE("relabelling the corners leaves every element measure unchanged", "[qu
   }
 }
 
-TEST_CASE("element measures follow Table 3.7 under scaling and rotating the nodes",
-          "[quality]") {
+TEST_CASE("element measures follow Table 3.7 under scaling and rotating the nodes", "[quality]") {
   const Eigen::Matrix2Xd X = test::curved_element(2);
   const Eigen::Matrix2Xd moved = 3.7 * test::rotation(1.1) * X;
   const ElementSampling s(2, lattice());

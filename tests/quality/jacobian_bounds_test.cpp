@@ -30,7 +30,8 @@ Eigen::Matrix2Xd curved_triangle(int p, double amplitude, std::mt19937& rng) {
   Eigen::Matrix2d A;
   A << 1.0 + jitter(rng), 0.5 + jitter(rng), jitter(rng), 0.9 + jitter(rng);
   Eigen::Matrix2Xd X = A * reference_nodes(p);
-  for (int i = 3; i < X.cols(); ++i) X.col(i) += amplitude / p * Eigen::Vector2d(unit(rng), unit(rng));
+  for (int i = 3; i < X.cols(); ++i)
+    X.col(i) += amplitude / p * Eigen::Vector2d(unit(rng), unit(rng));
   return X;
 }
 
@@ -127,8 +128,7 @@ TEST_CASE("derivative control points reproduce J, every order to 10", "[bounds]"
   CHECK_THROWS_AS(jacobian_control_points(Eigen::Matrix2Xd::Zero(2, 6), 3, U, V), Error);
 }
 
-TEST_CASE("bounds contain det J at 10^4 random points, valid and invalid elements",
-          "[bounds]") {
+TEST_CASE("bounds contain det J at 10^4 random points, valid and invalid elements", "[bounds]") {
   std::mt19937 rng(13);
   int valid = 0, invalid = 0;
   for (int p = 2; p <= 6; ++p) {
@@ -180,8 +180,7 @@ TEST_CASE("quadratic with one mid-node slid along its edge: invalid from t = 1/4
   }
 }
 
-TEST_CASE("folded corner: det J > 0 at every node yet invalid, caught by the bounds",
-          "[bounds]") {
+TEST_CASE("folded corner: det J > 0 at every node yet invalid, caught by the bounds", "[bounds]") {
   // Both mid-nodes at corner 0 slid to 1/10 of their edges: each edge's
   // parametrisation runs backwards past corner 0 (x = u (1.6 u - 0.6) on edge
   // 0-1), the two edges overlap there and the element folds. At corner 0 the
@@ -264,18 +263,28 @@ TEST_CASE("scaled ratio matches Gmsh's AnalyseMeshQuality on curved elements", "
     std::vector<double> x, y;
   };
   const std::vector<Case> cases = {
-      {3, 0.9044041509150115,
+      {3,
+       0.9044041509150115,
        {0.0, 1.206, 0.379, 0.407, 0.804, 0.925, 0.659, 0.258, 0.13, 0.522},
        {0.0, 0.08, 0.844, 0.026, 0.052, 0.33, 0.592, 0.564, 0.283, 0.306}},
-      {4, 0.8272615442121853,
-       {0.0, 0.929, 0.256, 0.232, 0.466, 0.692, 0.762, 0.595, 0.422, 0.192, 0.133, 0.067, 0.293, 0.523, 0.364},
-       {0.0, 0.056, 1.175, 0.017, 0.025, 0.042, 0.334, 0.612, 0.9, 0.881, 0.587, 0.298, 0.31, 0.319, 0.598}},
-      {4, -0.13966738780619906,
-       {0.0, 1.214, 0.406, 0.365, 0.617, 0.857, 0.992, 0.77, 0.543, 0.346, 0.149, 0.086, 0.342, 0.734, 0.489},
-       {0.0, -0.078, 1.106, 0.054, 0.013, -0.038, 0.249, 0.492, 0.814, 0.831, 0.511, 0.268, 0.289, 0.279, 0.526}},
-      {5, 0.711447627083437,
-       {0.0, 0.787, 0.534, 0.156, 0.317, 0.471, 0.627, 0.735, 0.688, 0.635, 0.585, 0.423, 0.319, 0.213, 0.107, 0.261, 0.582, 0.474, 0.422, 0.532, 0.372},
-       {0.0, 0.261, 0.887, 0.049, 0.107, 0.16, 0.21, 0.39, 0.511, 0.635, 0.764, 0.707, 0.536, 0.353, 0.179, 0.226, 0.331, 0.585, 0.28, 0.459, 0.407}},
+      {4,
+       0.8272615442121853,
+       {0.0, 0.929, 0.256, 0.232, 0.466, 0.692, 0.762, 0.595, 0.422, 0.192, 0.133, 0.067, 0.293,
+        0.523, 0.364},
+       {0.0, 0.056, 1.175, 0.017, 0.025, 0.042, 0.334, 0.612, 0.9, 0.881, 0.587, 0.298, 0.31, 0.319,
+        0.598}},
+      {4,
+       -0.13966738780619906,
+       {0.0, 1.214, 0.406, 0.365, 0.617, 0.857, 0.992, 0.77, 0.543, 0.346, 0.149, 0.086, 0.342,
+        0.734, 0.489},
+       {0.0, -0.078, 1.106, 0.054, 0.013, -0.038, 0.249, 0.492, 0.814, 0.831, 0.511, 0.268, 0.289,
+        0.279, 0.526}},
+      {5,
+       0.711447627083437,
+       {0.0,   0.787, 0.534, 0.156, 0.317, 0.471, 0.627, 0.735, 0.688, 0.635, 0.585,
+        0.423, 0.319, 0.213, 0.107, 0.261, 0.582, 0.474, 0.422, 0.532, 0.372},
+       {0.0,   0.261, 0.887, 0.049, 0.107, 0.16,  0.21,  0.39, 0.511, 0.635, 0.764,
+        0.707, 0.536, 0.353, 0.179, 0.226, 0.331, 0.585, 0.28, 0.459, 0.407}},
   };
   for (const Case& c : cases) {
     INFO("p = " << c.p);

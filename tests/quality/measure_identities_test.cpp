@@ -21,16 +21,14 @@ const std::vector<Eigen::Matrix2d>& samples() {
 
 }  // namespace
 
-TEST_CASE("W is I for the unit equilateral triangle and s R for any equilateral one",
-          "[quality]") {
+TEST_CASE("W is I for the unit equilateral triangle and s R for any equilateral one", "[quality]") {
   const Eigen::Matrix2d J_equilateral = reference_to_ideal_jacobian();
   CHECK((ideal_jacobian(J_equilateral) - Eigen::Matrix2d::Identity()).norm() < 1e-15);
   // Equilateral triangle of side 2.5 rotated by 0.7: J = 2.5 R J_ri.
   const Eigen::Matrix2d R = test::rotation(0.7);
   CHECK((ideal_jacobian(2.5 * R * J_equilateral) - 2.5 * R).norm() < 1e-14);
   // Reference triangle itself: W = inv(J_ri), omega = 2 / sqrt(3).
-  CHECK(ideal_jacobian(Eigen::Matrix2d::Identity()).determinant() ==
-        Approx(2.0 / std::sqrt(3.0)));
+  CHECK(ideal_jacobian(Eigen::Matrix2d::Identity()).determinant() == Approx(2.0 / std::sqrt(3.0)));
 }
 
 TEST_CASE("Q6 = Q7 = Q11 = Q12 in 2D, and raw Q12 is twice raw Q6, Q7, Q11", "[quality]") {
@@ -59,8 +57,9 @@ TEST_CASE("Q8 and Q16 detect distortion identically: 1/Q16 - 1/Q8 = 1 raw", "[qu
     const double inv16 = 1.0 / metric_condition_number_raw(W);
     REQUIRE(inv16 - 1.0 / oddy_raw(W) == Approx(1.0).margin(1e-13 * inv16));
     // Normalised: Theta8 = 2 Theta16, the same ordering of all elements.
-    REQUIRE(distortion(oddy_quality(W)) ==
-            Approx(2.0 * distortion(metric_condition_number_quality(W))).epsilon(1e-8).margin(1e-12));
+    REQUIRE(
+        distortion(oddy_quality(W)) ==
+        Approx(2.0 * distortion(metric_condition_number_quality(W))).epsilon(1e-8).margin(1e-12));
   }
 }
 

@@ -19,8 +19,9 @@ bool close(double a, double b) { return std::abs(a - b) <= 1e-10 * std::max(1.0,
 
 // Fraction of the samples on which m.quality changes under `transform` by
 // more than rounding (relative 1e-10).
-double fraction_changed(const Measure& m,
-                        const std::function<Eigen::Matrix2d(int, const Eigen::Matrix2d&)>& transform) {
+double fraction_changed(
+    const Measure& m,
+    const std::function<Eigen::Matrix2d(int, const Eigen::Matrix2d&)>& transform) {
   int changed = 0;
   for (size_t i = 0; i < samples().size(); ++i) {
     const double q = m.quality(samples()[i]);
@@ -103,10 +104,12 @@ TEST_CASE("scale and rotation invariance match thesis Table 3.7", "[quality]") {
     CHECK(m.invariance.rotation == (row.at("rotation") == "1"));
     if (!m.pointwise()) continue;  // Q1: see element_quality_test.cpp
     // Invariant: no sample changes. Sensitive: almost every sample changes.
-    const double scaled =
-        fraction_changed(m, [&](int i, const Eigen::Matrix2d& W) -> Eigen::Matrix2d { return scales[i] * W; });
-    const double rotated = fraction_changed(
-        m, [&](int i, const Eigen::Matrix2d& W) -> Eigen::Matrix2d { return test::rotation(angles[i]) * W; });
+    const double scaled = fraction_changed(
+        m, [&](int i, const Eigen::Matrix2d& W) -> Eigen::Matrix2d { return scales[i] * W; });
+    const double rotated =
+        fraction_changed(m, [&](int i, const Eigen::Matrix2d& W) -> Eigen::Matrix2d {
+          return test::rotation(angles[i]) * W;
+        });
     INFO("changed by scaling " << scaled << ", by rotation " << rotated);
     CHECK((m.invariance.scale ? scaled == 0.0 : scaled > 0.98));
     CHECK((m.invariance.rotation ? rotated == 0.0 : rotated > 0.98));

@@ -1,9 +1,10 @@
 // The registry of quality measures: names, lookup, errors, documentation.
+#include "quality/measure_registry.h"
+
 #include <catch2/catch.hpp>
 #include <set>
 
 #include "core/error.h"
-#include "quality/measure_registry.h"
 
 namespace homesh {
 

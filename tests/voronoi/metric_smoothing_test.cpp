@@ -44,8 +44,7 @@ TEST_CASE("metric mean ratio: 1 for equilateral in M, sign of the orientation, s
         Approx(1.0));
 }
 
-TEST_CASE("metric smoothing: a displaced centre node goes back, boundary nodes stay",
-          "[voronoi]") {
+TEST_CASE("metric smoothing: a displaced centre node goes back, boundary nodes stay", "[voronoi]") {
   Hexagon h;
   const Eigen::Matrix2Xd ring = h.x.rightCols(6);
   h.x.col(0) << 0.45, -0.3;
@@ -53,8 +52,7 @@ TEST_CASE("metric smoothing: a displaced centre node goes back, boundary nodes s
   const double before = worst(h.x, h.tri, I);
   std::vector<char> free_node(7, 0);
   free_node[0] = 1;
-  const int moves =
-      smooth_free_nodes(h.x, h.tri, free_node, MetricField::constant(I), 3);
+  const int moves = smooth_free_nodes(h.x, h.tri, free_node, MetricField::constant(I), 3);
   CHECK(moves >= 1);
   CHECK(before < 0.7);
   CHECK(h.x.col(0).norm() < 1e-12);  // the mean of the neighbours and of the apexes
@@ -62,9 +60,10 @@ TEST_CASE("metric smoothing: a displaced centre node goes back, boundary nodes s
   CHECK((h.x.rightCols(6) - ring).norm() == 0.0);
 }
 
-TEST_CASE("metric smoothing: in an anisotropic metric the node goes to the metric's centre and "
-          "a fold is undone, never made",
-          "[voronoi]") {
+TEST_CASE(
+    "metric smoothing: in an anisotropic metric the node goes to the metric's centre and "
+    "a fold is undone, never made",
+    "[voronoi]") {
   // The hexagon stretched 5 times along y is equilateral in diag(1, 1/25).
   Hexagon h;
   h.x.row(1) *= 5.0;

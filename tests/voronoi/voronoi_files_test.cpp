@@ -60,8 +60,8 @@ TEST_CASE("metric files: a coarse grid of SPD tensors", "[voronoi][files]") {
   CHECK_THROWS_WITH(read_metric_file(box), Catch::Contains("NX, NY >= 2"));
   // Found by fuzz_voronoi_files: counts beyond int and boxes of infinite width.
   const std::string huge = write_temp(dir, "metric_huge.txt", "grid 1e300 2 0 0 1 1\n");
-  CHECK_THROWS_WITH(read_metric_file(huge), Catch::Contains(huge + ":1:") &&
-                                                Catch::Contains("at most 1e7"));
+  CHECK_THROWS_WITH(read_metric_file(huge),
+                    Catch::Contains(huge + ":1:") && Catch::Contains("at most 1e7"));
   const std::string wide = write_temp(dir, "metric_wide.txt", "grid 2 2 -1e308 0 1e308 1\n");
   CHECK_THROWS_WITH(read_metric_file(wide), Catch::Contains("finite XMAX > XMIN"));
 }

@@ -48,14 +48,14 @@ void run(Context& ctx, const CurveOptions& o) {
       o);
   const DeformOptions& d = o.deform;
   if (c.fell_back) {
-    const std::string restricted =
-        std::string(o.fixed_vertices ? "vertices held, " : "") +
-        (d.layers > 0 ? fmt::format("within {} element layers", d.layers)
-         : d.reach > 0 ? fmt::format("within reach {:g}", d.reach)
-                       : std::string("whole mesh"));
-    ctx.log.info("curve: the solve ({}) kept the mesh valid only up to {:.1f} % of the motion; "
-                 "solving on the whole mesh with every interior node free",
-                 restricted, 100 * c.restricted_reached);
+    const std::string restricted = std::string(o.fixed_vertices ? "vertices held, " : "") +
+                                   (d.layers > 0 ? fmt::format("within {} element layers", d.layers)
+                                    : d.reach > 0 ? fmt::format("within reach {:g}", d.reach)
+                                                  : std::string("whole mesh"));
+    ctx.log.info(
+        "curve: the solve ({}) kept the mesh valid only up to {:.1f} % of the motion; "
+        "solving on the whole mesh with every interior node free",
+        restricted, 100 * c.restricted_reached);
   }
   const DeformResult& r = c.deform;
   if (!r.complete)
@@ -80,27 +80,29 @@ Stage curve_stage() {
   OptionTable<CurveOptions> t;
   t.add("p", &CurveOptions::order, integer(2, kMaxOrder),
         "element order, 2 to " + std::to_string(kMaxOrder));
-  t.add("increments", [](CurveOptions& o) -> int& { return o.deform.increments; },
-        integer(1, 1000),
-        "load increments (halved where validity needs it); formulations whose terms depend on "
-        "the deformation so far (force_q17, heat_*, metric_*, stiff_*) see only the straight "
-        "mesh in one increment: give them 4 or more");
-  t.add("vertices", &CurveOptions::fixed_vertices,
-        choice<bool>({{"fixed", true}, {"free", false}}),
+  t.add(
+      "increments", [](CurveOptions& o) -> int& { return o.deform.increments; }, integer(1, 1000),
+      "load increments (halved where validity needs it); formulations whose terms depend on "
+      "the deformation so far (force_q17, heat_*, metric_*, stiff_*) see only the straight "
+      "mesh in one increment: give them 4 or more");
+  t.add("vertices", &CurveOptions::fixed_vertices, choice<bool>({{"fixed", true}, {"free", false}}),
         "fixed: the linear mesh's vertices stay (boundary-layer heights kept exactly), only the "
         "nodes the order raising adds move; free: every interior node moves (the thesis)");
-  t.add("layers", [](CurveOptions& o) -> int& { return o.deform.layers; }, integer(0, 1000),
-        "0: no effect; k > 0: solve only on the elements within k element layers of the "
-        "moving boundary nodes, the rest held still (as Gmsh's Mesh.HighOrderNumLayers; "
-        "replaces reach)");
-  t.add("reach", [](CurveOptions& o) -> double& { return o.deform.reach; }, real(0),
-        "0: solve on the whole mesh; r > 0: only on the triangles within r times the size of "
-        "the boundary triangles of the moving boundary, the rest held still (a boundary "
-        "layer's thin elements do not shrink this region); the whole mesh if that fails");
-  t.add("corner", [](CurveOptions& o) -> double& { return o.boundary.corner_degrees; },
-        real(0, 180, "()"),
-        "without CAD (a .msh): boundary vertices turning more than this (degrees) stay sharp "
-        "corners of the rebuilt spline curves");
+  t.add(
+      "layers", [](CurveOptions& o) -> int& { return o.deform.layers; }, integer(0, 1000),
+      "0: no effect; k > 0: solve only on the elements within k element layers of the "
+      "moving boundary nodes, the rest held still (as Gmsh's Mesh.HighOrderNumLayers; "
+      "replaces reach)");
+  t.add(
+      "reach", [](CurveOptions& o) -> double& { return o.deform.reach; }, real(0),
+      "0: solve on the whole mesh; r > 0: only on the triangles within r times the size of "
+      "the boundary triangles of the moving boundary, the rest held still (a boundary "
+      "layer's thin elements do not shrink this region); the whole mesh if that fails");
+  t.add(
+      "corner", [](CurveOptions& o) -> double& { return o.boundary.corner_degrees; },
+      real(0, 180, "()"),
+      "without CAD (a .msh): boundary vertices turning more than this (degrees) stay sharp "
+      "corners of the rebuilt spline curves");
   add_analogy_options(
       t, [](CurveOptions& o) -> std::string& { return o.deform.formulation; },
       [](CurveOptions& o) -> FormulationParams& { return o.deform.params; },

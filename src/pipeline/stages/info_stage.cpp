@@ -11,7 +11,7 @@ void run(Context& ctx, const NoOptions&) {
   const Mesh& m = ctx.require_mesh("info");
   ctx.log.report("info: {} (CAD: {})", ctx.input, ctx.has_cad ? "yes" : "no");
   ctx.log.report("  order {}: {} nodes, {} triangles, {} boundary lines, {} points", m.order,
-               m.num_nodes(), m.num_triangles(), m.num_lines(), m.point_node.size());
+                 m.num_nodes(), m.num_triangles(), m.num_lines(), m.point_node.size());
   int count[3] = {0, 0, 0};
   for (const Entity& e : m.entities) ++count[e.dim];
   ctx.log.report("  entities: {} points, {} curves, {} surfaces", count[0], count[1], count[2]);
@@ -24,7 +24,7 @@ void run(Context& ctx, const NoOptions&) {
     int elements = 0;
     for (int e : g.entities) elements += g.dim == 1 ? lines_on[e] : g.dim == 2 ? tris_on[e] : 0;
     ctx.log.report("  physical {} {} \"{}\": {} entities, {} elements", dim_name(g.dim), g.tag,
-                 g.name, g.entities.size(), elements);
+                   g.name, g.entities.size(), elements);
   }
 }
 

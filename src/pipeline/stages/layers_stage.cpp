@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pipeline/analogy_options.h"
 #include "layers/insert_layers.h"
 #include "layers/radius_ratio.h"
+#include "pipeline/analogy_options.h"
 
 namespace homesh {
 namespace {
@@ -17,8 +17,10 @@ void run(Context& ctx, const LayerOptions& o) {
   const int order = m.order, nodes = m.num_nodes(), triangles = m.num_triangles();
   LayerResult r = insert_layers(m, o);
   if (r.from_corners)
-    ctx.log.info("layers: the input is of order {}: its corners are layered and the result is "
-                 "linear (curve it with -m curve:p=N)", order);
+    ctx.log.info(
+        "layers: the input is of order {}: its corners are layered and the result is "
+        "linear (curve it with -m curve:p=N)",
+        order);
   const std::vector<int> corner = corner_triangles(r, r.sharpest_node);
   m = std::move(r.mesh);
 
@@ -31,16 +33,20 @@ void run(Context& ctx, const LayerOptions& o) {
 
   std::string walls;
   for (const std::string& w : o.walls) walls += (walls.empty() ? "" : ",") + w;
-  ctx.log.info("layers: {} layers on {} ({} loop(s), {} wall edges, {} fans), thickness {:.6g} "
-               "(first {:g}, ratio {:g})", o.layers, walls, r.loops,
-               r.wall_edges, r.fan_nodes, r.thickness, o.first, o.ratio);
+  ctx.log.info(
+      "layers: {} layers on {} ({} loop(s), {} wall edges, {} fans), thickness {:.6g} "
+      "(first {:g}, ratio {:g})",
+      o.layers, walls, r.loops, r.wall_edges, r.fan_nodes, r.thickness, o.first, o.ratio);
   if (r.open_walls > 0)
-    ctx.log.info("layers: {} of the walls open: their layers end along the boundary curves at "
-                 "their ends, whose lines are split at the layer nodes", r.open_walls);
-  ctx.log.info("layers: room opened in {} elastic step(s) (formulation {}, nu {:g}), {} node "
-               "move(s) smoothing squeezed triangles; {} -> {} triangles, {} -> {} nodes",
-               r.push_steps, o.room.formulation, o.room.params.poisson, r.smoothed, triangles,
-               m.num_triangles(), nodes, m.num_nodes());
+    ctx.log.info(
+        "layers: {} of the walls open: their layers end along the boundary curves at "
+        "their ends, whose lines are split at the layer nodes",
+        r.open_walls);
+  ctx.log.info(
+      "layers: room opened in {} elastic step(s) (formulation {}, nu {:g}), {} node "
+      "move(s) smoothing squeezed triangles; {} -> {} triangles, {} -> {} nodes",
+      r.push_steps, o.room.formulation, o.room.params.poisson, r.smoothed, triangles,
+      m.num_triangles(), nodes, m.num_nodes());
   double worst = 1, sum = 0, others = 1;
   int count = 0;
   for (int e = 0; e < m.num_triangles(); ++e)
@@ -51,22 +57,27 @@ void run(Context& ctx, const LayerOptions& o) {
     } else {
       others = std::min(others, q(e));
     }
-  ctx.log.info("layers: radius ratio Q (Eq 4.17) of the {} layer triangles: min {:.4f}, mean {:.4f}; "
-               "of the other triangles: min {:.4f}", count, worst, sum / std::max(count, 1), others);
+  ctx.log.info(
+      "layers: radius ratio Q (Eq 4.17) of the {} layer triangles: min {:.4f}, mean {:.4f}; "
+      "of the other triangles: min {:.4f}",
+      count, worst, sum / std::max(count, 1), others);
   double corner_worst = 1;
   for (int e : corner) corner_worst = std::min(corner_worst, q(e));
   const double degrees = r.sharpest_angle * 180 / M_PI;
   const auto normals_there = std::count_if(r.lines.begin(), r.lines.end(), [&](const LayerLine& l) {
     return l.wall_node == r.sharpest_node;
   });
-  ctx.log.info("layers: at the sharpest wall node ({:.6g}, {:.6g}), {:.1f} deg ({}): min Q {:.4f} "
-               "over its {} layer triangles",
-               m.x(0, r.sharpest_node), m.x(1, r.sharpest_node), degrees,
-               normals_there > 1 ? fmt::format("fan of {} normals", normals_there) : "single normal",
-               corner_worst, corner.size());
+  ctx.log.info(
+      "layers: at the sharpest wall node ({:.6g}, {:.6g}), {:.1f} deg ({}): min Q {:.4f} "
+      "over its {} layer triangles",
+      m.x(0, r.sharpest_node), m.x(1, r.sharpest_node), degrees,
+      normals_there > 1 ? fmt::format("fan of {} normals", normals_there) : "single normal",
+      corner_worst, corner.size());
   if (o.normals.multi && r.fan_nodes == 0)
-    ctx.log.warn("layers: no wall node reaches fan_angle = {:g} deg (the sharpest has {:.1f} deg): "
-                 "single normals everywhere", o.normals.fan_angle, degrees);
+    ctx.log.warn(
+        "layers: no wall node reaches fan_angle = {:g} deg (the sharpest has {:.1f} deg): "
+        "single normals everywhere",
+        o.normals.fan_angle, degrees);
 }
 
 }  // namespace
@@ -83,14 +94,18 @@ Stage layers_stage() {
         "thickness of the layer at the wall");
   t.add("ratio", &LayerOptions::ratio, real(0, INFINITY, "(]"),
         "thickness ratio of consecutive layers");
-  t.add("normals", [](LayerOptions& o) -> bool& { return o.normals.multi; },
-        choice<bool>({{"single", false}, {"multi", true}}),
-        "single | multi (fans of normals at sharp wall nodes)");
-  t.add("fan", [](LayerOptions& o) -> int& { return o.normals.fan; },
-        where<int>(integer(3, 99), [](const int& n) { return n % 2 == 1; }, "must be odd"),
-        "normals per fan (odd, >= 3)");
-  t.add("fan_angle", [](LayerOptions& o) -> double& { return o.normals.fan_angle; },
-        real(180, 360, "[)"), "domain angle (deg) from which a wall node gets a fan");
+  t.add(
+      "normals", [](LayerOptions& o) -> bool& { return o.normals.multi; },
+      choice<bool>({{"single", false}, {"multi", true}}),
+      "single | multi (fans of normals at sharp wall nodes)");
+  t.add(
+      "fan", [](LayerOptions& o) -> int& { return o.normals.fan; },
+      where<int>(
+          integer(3, 99), [](const int& n) { return n % 2 == 1; }, "must be odd"),
+      "normals per fan (odd, >= 3)");
+  t.add(
+      "fan_angle", [](LayerOptions& o) -> double& { return o.normals.fan_angle; },
+      real(180, 360, "[)"), "domain angle (deg) from which a wall node gets a fan");
   add_analogy_options(
       t, [](LayerOptions& o) -> std::string& { return o.room.formulation; },
       [](LayerOptions& o) -> FormulationParams& { return o.room.params; },
@@ -101,8 +116,8 @@ Stage layers_stage() {
                            : "";
   });
   return make_stage<LayerOptions>(
-      "layers", "boundary layers on walls: room opened by the elastic analogy, geometric layers",
-      t, run);
+      "layers", "boundary layers on walls: room opened by the elastic analogy, geometric layers", t,
+      run);
 }
 
 }  // namespace homesh

@@ -47,9 +47,7 @@ Stage mesh_stage() {
         "factor on all sizes (Mesh.MeshSizeFactor)");
   t.add("algorithm", &MeshOptions::algorithm, choice(kAlgorithms), names_text(names));
   t.check([](const MeshOptions& o) {
-    return o.size_max > 0 && o.size_min > o.size_max
-               ? "need size_min <= size_max (0 = unset)"
-               : "";
+    return o.size_max > 0 && o.size_min > o.size_max ? "need size_min <= size_max (0 = unset)" : "";
   });
   return make_stage<MeshOptions>(
       "mesh", "new linear triangle mesh of the input's CAD by Gmsh (replaces any mesh)", t, run,

@@ -57,20 +57,21 @@ Stage optimise_stage() {
         "fixed: the linear mesh's vertices stay, only the nodes the order raising added move; "
         "free: interior vertices move too");
   t.add("target", &OptimiseOptions::target,
-        choice<OptimiseOptions::Target>(
-            {{"straight", OptimiseOptions::Target::straight},
-             {"ideal", OptimiseOptions::Target::ideal}}),
+        choice<OptimiseOptions::Target>({{"straight", OptimiseOptions::Target::straight},
+                                         {"ideal", OptimiseOptions::Target::ideal}}),
         "shape the distortion is measured from: straight (each element's straight-sided shape "
         "at the start) | ideal (the thesis' equilateral element)");
-  t.add("r", [](OptimiseOptions& o) -> double& { return o.energy.r; }, real(1, 16),
-        "exponent r of Eq 3.48 (>= 2 keeps its barrier)");
-  t.add("alpha", [](OptimiseOptions& o) -> double& { return o.energy.alpha; }, real(0, 1e6),
-        "weight of the size distortion (det J against its element mean) beside the shape "
-        "distortion |W|^2 / (2 det W) - 1");
-  t.add("epsilon", [](OptimiseOptions& o) -> double& { return o.energy.epsilon; },
-        real(0, 1, "[)"),
-        "barrier floor: steps refused where det J falls to this fraction of its element mean "
-        "at a quadrature point (0: only det J > 0)");
+  t.add(
+      "r", [](OptimiseOptions& o) -> double& { return o.energy.r; }, real(1, 16),
+      "exponent r of Eq 3.48 (>= 2 keeps its barrier)");
+  t.add(
+      "alpha", [](OptimiseOptions& o) -> double& { return o.energy.alpha; }, real(0, 1e6),
+      "weight of the size distortion (det J against its element mean) beside the shape "
+      "distortion |W|^2 / (2 det W) - 1");
+  t.add(
+      "epsilon", [](OptimiseOptions& o) -> double& { return o.energy.epsilon; }, real(0, 1, "[)"),
+      "barrier floor: steps refused where det J falls to this fraction of its element mean "
+      "at a quadrature point (0: only det J > 0)");
   return make_stage<OptimiseOptions>(
       "optimise",
       "high-order optimiser: patches round the elements below a minJ/maxJ threshold moved to "

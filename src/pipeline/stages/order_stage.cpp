@@ -9,8 +9,7 @@ void run(Context& ctx, const OrderOptions& o) {
   Mesh& m = ctx.require_mesh("order");
   m = raise_order(m, o.order);
   ctx.fields.clear();
-  ctx.log.info("order: p = {}, {} nodes, {} triangles", o.order, m.num_nodes(),
-               m.num_triangles());
+  ctx.log.info("order: p = {}, {} nodes, {} triangles", o.order, m.num_nodes(), m.num_triangles());
 }
 
 }  // namespace

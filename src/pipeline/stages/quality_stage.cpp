@@ -80,14 +80,14 @@ Stage quality_stage() {
         "normalise size measures by the element's max (thesis) or by the unit ideal");
   t.add("lattice", &O::lattice, integer(0, 60),
         "order of the sampling lattice for minima (0 = 2p)");
-  t.add("tolerance", [](O& o) -> double& { return o.bounds.relative_tolerance; },
-        real(0, 1, "()"), "relative tolerance of the certified Jacobian bounds");
+  t.add(
+      "tolerance", [](O& o) -> double& { return o.bounds.relative_tolerance; }, real(0, 1, "()"),
+      "relative tolerance of the certified Jacobian bounds");
   t.add("worst", &O::worst, integer(0, 1000), "number of worst elements to list");
   t.add("threads", &O::threads, integer(0, 1024),
         "threads for bounds and measures (0 = one per core)");
-  return make_stage<O>("quality",
-                       "certified validity (minJ/maxJ) and quality measures: views and a report",
-                       t, run);
+  return make_stage<O>(
+      "quality", "certified validity (minJ/maxJ) and quality measures: views and a report", t, run);
 }
 
 }  // namespace homesh

@@ -51,11 +51,11 @@ void run(Context& ctx, const RotateStageOptions& o) {
       "formulation {}, nu {:g}, heat {:g}, solver {}",
       wall, res.centre.x(), res.centre.y(), r.step, r.total ? "initial" : "current",
       r.total ? 1 : r.substeps, r.formulation, r.params.poisson, r.params.heat, r.solver.method);
-  ctx.log.info("  {} steps, {} solves, worst minJ/maxJ {:.4f}, {}", res.steps, res.solves,
-               res.worst_ratio,
-               res.reached_max ? "maximum angle reached"
-                               : fmt::format("the next step leaves {} triangles invalid",
-                                             res.invalid_at_failure));
+  ctx.log.info(
+      "  {} steps, {} solves, worst minJ/maxJ {:.4f}, {}", res.steps, res.solves, res.worst_ratio,
+      res.reached_max
+          ? "maximum angle reached"
+          : fmt::format("the next step leaves {} triangles invalid", res.invalid_at_failure));
 }
 
 }  // namespace
@@ -67,18 +67,24 @@ Stage rotate_stage() {
   t.add("wall", &O::wall, list(),
         "the curves to rotate, comma-separated, each a curve physical group name, a curve "
         "physical group number or, if no group has that number, a curve tag");
-  t.add("centre", [](O& o) -> std::optional<Eigen::Vector2d>& { return o.rotation.centre; },
-        point_or("auto"), "x,y, or auto: centre of the circle fitted to the wall's nodes");
-  t.add("step", [](O& o) -> double& { return o.rotation.step; },
-        where<double>(real(), [](const double& h) { return h != 0; }, "must be nonzero"),
-        "angle step, degrees (negative: clockwise)");
-  t.add("max", [](O& o) -> double& { return o.rotation.max_angle; }, real(0),
-        "largest angle tried, degrees");
-  t.add("substeps", [](O& o) -> int& { return o.rotation.substeps; }, integer(1, 1000),
-        "solves per step (pose=current)");
-  t.add("pose", [](O& o) -> bool& { return o.rotation.total; },
-        choice<bool>({{"current", false}, {"initial", true}}),
-        "pose each step on the current mesh (thesis) or the initial one");
+  t.add(
+      "centre", [](O& o) -> std::optional<Eigen::Vector2d>& { return o.rotation.centre; },
+      point_or("auto"), "x,y, or auto: centre of the circle fitted to the wall's nodes");
+  t.add(
+      "step", [](O& o) -> double& { return o.rotation.step; },
+      where<double>(
+          real(), [](const double& h) { return h != 0; }, "must be nonzero"),
+      "angle step, degrees (negative: clockwise)");
+  t.add(
+      "max", [](O& o) -> double& { return o.rotation.max_angle; }, real(0),
+      "largest angle tried, degrees");
+  t.add(
+      "substeps", [](O& o) -> int& { return o.rotation.substeps; }, integer(1, 1000),
+      "solves per step (pose=current)");
+  t.add(
+      "pose", [](O& o) -> bool& { return o.rotation.total; },
+      choice<bool>({{"current", false}, {"initial", true}}),
+      "pose each step on the current mesh (thesis) or the initial one");
   add_analogy_options(
       t, [](O& o) -> std::string& { return o.rotation.formulation; },
       [](O& o) -> FormulationParams& { return o.rotation.params; },

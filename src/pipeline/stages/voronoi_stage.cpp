@@ -442,16 +442,18 @@ Stage voronoi_stage() {
   t.add("seeds", &O::seeds, text(),
         "auto (front rows, then Poisson-disc in the metric) | FILE (interior seeds, one 'x y' "
         "per line; the boundary seeds are placed from the metric)");
-  t.add("front", [](O& o) -> int& { return o.seeding.front_rows; },
-        integer(0, 1000, {{"all", kAllFrontRows}}),
-        "with auto seeds: rows of seeds advancing from the boundary, each at the apexes of "
-        "the unit triangles (in the metric) on the row before (Rebay's frontal placement), "
-        "and a seed splitting each corner of 75-140 degrees; Poisson-disc seeds fill where "
-        "the fronts meet, Lloyd's iteration holds the first row | N: N rows | 0: none, "
-        "Poisson-disc seeds only");
-  t.add("lloyd", [](O& o) -> int& { return o.lloyd.iterations; }, integer(0, 100),
-        "Lloyd iterations on the auto seeds: each interior seed but the first front row "
-        "moves to the metric centroid of its region (0: none)");
+  t.add(
+      "front", [](O& o) -> int& { return o.seeding.front_rows; },
+      integer(0, 1000, {{"all", kAllFrontRows}}),
+      "with auto seeds: rows of seeds advancing from the boundary, each at the apexes of "
+      "the unit triangles (in the metric) on the row before (Rebay's frontal placement), "
+      "and a seed splitting each corner of 75-140 degrees; Poisson-disc seeds fill where "
+      "the fronts meet, Lloyd's iteration holds the first row | N: N rows | 0: none, "
+      "Poisson-disc seeds only");
+  t.add(
+      "lloyd", [](O& o) -> int& { return o.lloyd.iterations; }, integer(0, 100),
+      "Lloyd iterations on the auto seeds: each interior seed but the first front row "
+      "moves to the metric centroid of its region (0: none)");
   t.add("smooth", &O::smooth, integer(0, 100),
         "sweeps of smart smoothing of the interior nodes after the dual (Laplacian or "
         "ideal-apex position, then compass searches: on the worst triangle where it stays "
@@ -460,8 +462,9 @@ Stage voronoi_stage() {
         "dual's; 0: none)");
   t.add("engine", &O::engine, one_of(engines), names_text(engines));
   t.add("grid", &O::grid,
-        where<int>(integer(0, 20000), [](const int& n) { return n == 0 || n >= 32; },
-                   "must be 0 (automatic) or at least 32"),
+        where<int>(
+            integer(0, 20000), [](const int& n) { return n == 0 || n >= 32; },
+            "must be 0 (automatic) or at least 32"),
         "grid nodes along the longer side (0: the smallest size over 6 cells, 200 to 1500)");
   return make_stage<O>("voronoi",
                        "new linear triangle mesh of the input's CAD, dual to the crystal Voronoi "
