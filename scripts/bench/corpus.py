@@ -54,6 +54,9 @@ import gmsh
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "scripts", "examples"))
+from naca7526 import interpolating_control_points  # noqa: E402 (the example's spline, shared)
+
 WALL = "wall"
 
 
@@ -109,24 +112,8 @@ def surface_control_points(code, n, side):
     q = np.column_stack([x - side * yt * np.sin(theta), yc + side * yt * np.cos(theta)])
     theta0 = float(theta[0])
     d_le = math.pi / n * 5 * t * 0.2969 / 2
-    P = np.zeros((n + 3, 2))
-    P[0] = q[0]
-    P[1] = q[0] + side * d_le / 3 * np.array([-math.sin(theta0), math.cos(theta0)])
-    A = np.zeros((n - 1, n - 1))
-    r = np.zeros((n - 1, 2))
-    for k in range(1, n):
-        i = k - 1
-        if k == 1:
-            A[i, i], r[i] = 7 / 12, q[1] - P[1] / 4
-        else:
-            A[i, i - 1], A[i, i], r[i] = 1 / 6, 2 / 3, q[k]
-        if k < n - 1:
-            A[i, i + 1] = 1 / 6
-        else:
-            r[i] = r[i] - q[n] / 6
-    P[2:n + 1] = np.linalg.solve(A, r)
-    P[n + 1] = (2 * q[n] + P[n]) / 3
-    P[n + 2] = q[n]
+    P = interpolating_control_points(
+        q, q[0] + side * d_le / 3 * np.array([-math.sin(theta0), math.cos(theta0)]))
     return P, q
 
 

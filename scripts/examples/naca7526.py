@@ -55,9 +55,18 @@ def surface_control_points(m, p, t, n, side):
     q = np.column_stack([x - side * yt * np.sin(theta), yc + side * yt * np.cos(theta)])
     theta0 = math.atan(2 * m / p) if m > 0 else 0.0
     d_le = math.pi / n * 5 * t * 0.2969 / 2
+    return interpolating_control_points(
+        q, q[0] + side * d_le / 3 * np.array([-math.sin(theta0), math.cos(theta0)]))
+
+
+def interpolating_control_points(q, second):
+    """Control points P_0..P_{n+2} of the clamped cubic B-spline with knots 0..n that
+    passes through q[0..n] at the knots, with P_1 = `second` (the leading-edge
+    derivative) and a natural end at q[n]."""
+    n = len(q) - 1
     P = np.zeros((n + 3, 2))
     P[0] = q[0]
-    P[1] = q[0] + side * d_le / 3 * np.array([-math.sin(theta0), math.cos(theta0)])
+    P[1] = second
     # Rows k = 1..n-1 for the unknowns P_2..P_n (a tridiagonal system).
     A = np.zeros((n - 1, n - 1))
     r = np.zeros((n - 1, 2))
