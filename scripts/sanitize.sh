@@ -18,7 +18,7 @@ export LSAN_OPTIONS="suppressions=$root/scripts/lsan-suppressions.txt:print_supp
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # The slowest end-to-end runs (minutes under ASan) and the timing-based
 # interrupt test are left to the plain pass.
-(cd "$build" && ctest --output-on-failure -j "$(nproc)" -E "15 layers|5 normals|SIGINT")
+(cd "$build" && ctest --output-on-failure --no-tests=error -j "$(nproc)" -E "15 layers|5 normals|SIGINT")
 
 for fuzzer in "$build"/fuzz_*; do
   name=$(basename "$fuzzer")
