@@ -109,6 +109,9 @@ int run(int argc, char** argv) {
 
   std::vector<homesh::StageCall> calls;
   for (const auto& m : modules) calls.push_back(homesh::parse_stage_call(m));
+  // Every stage's options are checked before the input is read (run_stages
+  // reads them again into the plan): a typo costs no time on a large input.
+  for (const auto& c : calls) homesh::stage(c.name).parse(c.given);
   // The output is checked before any work: a bad path costs no minutes of meshing.
   if (!output.empty()) homesh::gmsh_adapter::check_msh_path(output);
 

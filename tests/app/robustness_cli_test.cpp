@@ -87,6 +87,10 @@ TEST_CASE("The output path is checked before any work", "[app][robustness]") {
   fs::create_directory(dir / "folder.msh");
   require_error(run_homesh(dir / "nosuch.geo " + dir / "folder.msh"), "is a folder");
   require_error(run_homesh(dir / "nosuch.geo " + dir / "out.vtk"), "homesh writes .msh files only");
+  // So are the stages' options, before the input is read.
+  r = run_homesh(dir / "nosuch.geo -m curve:p=3,nu=0.3");
+  require_error(r, "stage 'curve': option p=3,nu=0.3: not an integer");
+  REQUIRE_THAT(r.output, !Catch::Contains("nosuch.geo"));
 }
 
 TEST_CASE("homesh --version names homesh's and Gmsh's versions", "[app][robustness]") {
