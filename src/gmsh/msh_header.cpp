@@ -103,4 +103,36 @@ MshHeader read_msh_header(const std::string& path) {
   return h;
 }
 
+void check_element_node_tags(const std::string& path) {
+  const MshHeader h = read_msh_header(path);
+  if (h.binary) return;
+  std::ifstream in(path, std::ios::binary);
+  const std::uint64_t at = section_start(in, "$Elements");
+  if (at == std::string::npos) return;
+  in.clear();
+  in.seekg(static_cast<std::streamoff>(at));
+  std::string line;
+  std::getline(in, line);  // the section's header: counts
+  for (long number = 2; std::getline(in, line); ++number) {
+    if (line.rfind("$EndElements", 0) == 0) return;
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string x; words >> x;) w.push_back(x);
+    // MSH 4: block headers (dim, entity, type, count) and elements (tag, nodes) hold no
+    // negative number. MSH 2.2: tag, type, number of tags, tags (a ghost partition's may
+    // be negative), nodes.
+    std::size_t first_node = 0;
+    if (h.version < 4 && w.size() >= 3) {
+      const std::string& n = w[2];
+      first_node = n.find_first_not_of("0123456789") == std::string::npos && n.size() < 6
+                       ? 3 + std::stoul(n)
+                       : w.size();
+    }
+    for (std::size_t k = first_node; k < w.size(); ++k)
+      if (w[k][0] == '-')
+        throw Error(path + ": line " + std::to_string(number) + " of its $Elements section names " +
+                    w[k] + "; node and element tags are positive");
+  }
+}
+
 }  // namespace homesh::gmsh_adapter

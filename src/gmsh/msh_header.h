@@ -22,4 +22,11 @@ struct MshHeader {
 /// it does not start with a $MeshFormat section, or a count is malformed.
 MshHeader read_msh_header(const std::string& path);
 
+/// Throws homesh::Error naming `path` and the line if an element of its
+/// ASCII $Elements section names a node tag that is not positive. Gmsh 4.8's
+/// MSH 4.1 reader indexes its node table with such a tag unchecked: it crashes
+/// or, depending on memory layout, silently takes another node. (Binary files
+/// pass unchecked: they go through the child read alone.)
+void check_element_node_tags(const std::string& path);
+
 }  // namespace homesh::gmsh_adapter

@@ -127,7 +127,10 @@ void load_input(const std::string& path, Context& ctx) {
       throw Error(path + ": defines no geometry and no mesh");
     }
   };
-  if (ext == "msh") gmsh_adapter::read_in_child(path, read);
+  if (ext == "msh") {
+    gmsh_adapter::check_element_node_tags(path);
+    gmsh_adapter::read_in_child(path, read);
+  }
   read();
 }
 
