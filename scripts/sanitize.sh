@@ -26,7 +26,7 @@ for fuzzer in "$build"/fuzz_*; do
   work=$(mktemp -d)
   cp -r "$corpus"/. "$work"/ 2>/dev/null || true
   echo "fuzzing $name for ${seconds}s"
-  "$fuzzer" -max_total_time="$seconds" -print_final_stats=1 "$work" 2>&1 | tail -3
+  "$fuzzer" -max_total_time="$seconds" -rss_limit_mb=8192 -print_final_stats=1 "$work" 2>&1 | tail -3
   rm -rf "$work"
 done
 echo "sanitizers and fuzzers: no findings"
