@@ -32,6 +32,9 @@ constexpr int kOutOfMemory = 3;
 constexpr int kFailed = 4;
 
 [[noreturn]] void child(const std::function<void()>& read, std::uint64_t memory, int report) {
+  // A crash here must reach the parent as a signal, not through a handler the
+  // process installed (libFuzzer's writes a crash file and exits with a code).
+  for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
   const int null = open("/dev/null", O_WRONLY);
   if (null >= 0) {  // the parent reports; Gmsh's messages would come twice
     dup2(null, STDOUT_FILENO);
@@ -121,6 +124,11 @@ void read_in_child(const std::string& path, const std::function<void()>& read) {
                 " MB for it: is a count in the file corrupt?");
   if (WIFEXITED(status) && WEXITSTATUS(status) == kFailed)
     throw Error(reason.find(path) == std::string::npos ? path + ": " + reason : reason);
+  if (!WIFEXITED(status) ||
+      WEXITSTATUS(status) != 0)  // e.g. Gmsh called exit(): not read to its end
+    throw Error(path + ": Gmsh's reader ended with status " +
+                std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                ": the file is malformed");
 }
 
 }  // namespace homesh::gmsh_adapter
