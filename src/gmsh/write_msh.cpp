@@ -4,6 +4,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "gmsh/gmsh_call.h"
 #include "gmsh/option_scope.h"
 
@@ -42,15 +43,11 @@ std::string sidecar_options(int num_views) {
 }
 
 void check_msh_path(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash)
-                        ? ""
-                        : path.substr(dot);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".msh")
+  const std::string ext = file_extension(path);
+  if (ext != "msh")
     throw Error(path + ": homesh writes .msh files only (MSH 2.2 or 4.1, as Gmsh's option " +
-                "Mesh.MshFileVersion says); got '" + (ext.empty() ? "no extension" : ext) + "'");
+                "Mesh.MshFileVersion says); got '" + (ext.empty() ? "no extension" : "." + ext) +
+                "'");
   AtomicFile::check_target(path);
 }
 

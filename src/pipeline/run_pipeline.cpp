@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/file_extension.h"
 #include "core/input_limits.h"
 #include "core/progress.h"
 #include "gmsh/exit_guard.h"
@@ -28,15 +29,6 @@
 
 namespace homesh {
 namespace {
-
-std::string extension(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  return ext;
-}
 
 void check_readable(const std::string& path) {
   struct stat st {};
@@ -101,7 +93,7 @@ void check_model_extent(const std::string& path) {
 void load_input(const std::string& path, Context& ctx) {
   static const std::vector<std::string> kinds = {"geo",  "step", "stp", "brep",
                                                  "iges", "igs",  "msh"};
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   if (std::find(kinds.begin(), kinds.end(), ext) == kinds.end())
     throw Error(path + ": unknown input kind '." + ext +
                 "' (expected .geo, .step, .stp, .brep, .iges, .igs or .msh)");
