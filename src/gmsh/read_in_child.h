@@ -10,7 +10,7 @@
 
 namespace homesh::gmsh_adapter {
 
-/// Runs `read` (reading `path` through Gmsh) in a forked child, its output
+/// Runs `read` (reading `path` through Gmsh) in a forked child (run_in_child), its output
 /// discarded, memory capped at 1 GiB + 64 x the file's size (except under
 /// AddressSanitizer, which needs its own address space) and time at 10 s +
 /// 2 s per MB (Gmsh reads MSH at well over 10 MB/s; a mutated file made it

@@ -176,6 +176,22 @@ TEST_CASE("Models Gmsh cannot mesh end in an error, never in an abort or a hang"
                 "homesh accepts coordinates up to 1e+12");
 }
 
+TEST_CASE("A mesh size far too small ends at the mesher's caps, not after hours",
+          "[app][robustness]") {
+  const TempDir dir;
+  const std::string plate = geo + "plate_hole.geo";
+  auto r = run_command("timeout 60 " + homesh_binary + " " + plate +
+                       " -m mesh:factor=1e-4:max_seconds=2 " + dir / "out.msh");
+  require_error(r, "plate_hole.geo: Gmsh's mesher did not finish within 2 s");
+  REQUIRE_FALSE(fs::exists(dir / "out.msh"));
+  r = run_command("timeout 60 " + homesh_binary + " " + plate +
+                  " -m mesh:factor=0.2:max_triangles=1000 " + dir / "out.msh");
+  require_error(r, "more than the limit of 1000 (mesh:max_triangles)");
+  r = run_homesh(plate + " -m mesh:factor=0.5:max_triangles=1e5 -m info");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+}
+
 TEST_CASE("Hostile .msh files: tags, missing nodes, dropped and non-manifold elements",
           "[app][robustness]") {
   const TempDir dir;

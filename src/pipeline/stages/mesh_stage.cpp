@@ -2,9 +2,12 @@
 
 #include <gmsh.h>
 
+#include <chrono>
+#include <cmath>
 #include <utility>
 #include <vector>
 
+#include "gmsh/generate_in_child.h"
 #include "gmsh/gmsh_call.h"
 #include "gmsh/read_model.h"
 
@@ -17,23 +20,29 @@ const std::vector<std::pair<std::string, int>> kAlgorithms = {
 
 void run(Context& ctx, const MeshOptions& o) {
   ctx.require_cad("mesh");
-  gmsh_adapter::gmsh_call("stage 'mesh' on " + ctx.input, [&] {
-    gmsh::option::setNumber("Mesh.Algorithm", o.algorithm);
-    if (o.size_min > 0) gmsh::option::setNumber("Mesh.MeshSizeMin", o.size_min);
-    if (o.size_max > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", o.size_max);
-    gmsh::option::setNumber("Mesh.MeshSizeFactor", o.factor);
-    gmsh::option::setNumber("Mesh.ElementOrder", 1);
-    gmsh::option::setNumber("Mesh.RecombineAll", 0);
-    gmsh::model::mesh::clear();
-    gmsh::model::mesh::generate(2);
-  });
-  ctx.mesh = gmsh_adapter::read_model(ctx.input);
+  ctx.mesh = gmsh_mesh(ctx.input, o);
   ctx.fields.clear();
   ctx.log.info("mesh: {} nodes, {} triangles, {} boundary lines", ctx.mesh->num_nodes(),
                ctx.mesh->num_triangles(), ctx.mesh->num_lines());
 }
 
 }  // namespace
+
+Mesh gmsh_mesh(const std::string& input, const MeshOptions& o) {
+  gmsh_adapter::gmsh_call("stage 'mesh' on " + input, [&] {
+    gmsh::option::setNumber("Mesh.Algorithm", o.algorithm);
+    if (o.size_min > 0) gmsh::option::setNumber("Mesh.MeshSizeMin", o.size_min);
+    if (o.size_max > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", o.size_max);
+    gmsh::option::setNumber("Mesh.MeshSizeFactor", o.factor);
+    gmsh::option::setNumber("Mesh.ElementOrder", 1);
+    gmsh::option::setNumber("Mesh.RecombineAll", 0);
+  });
+  gmsh_adapter::generate_in_child(
+      input, {static_cast<std::size_t>(o.max_triangles),
+              {gmsh_adapter::default_memory_cap(),
+               std::chrono::seconds(static_cast<long>(std::ceil(o.max_seconds)))}});
+  return gmsh_adapter::read_model(input);
+}
 
 Stage mesh_stage() {
   std::vector<std::string> names;
@@ -46,6 +55,10 @@ Stage mesh_stage() {
   t.add("factor", &MeshOptions::factor, real(0, INFINITY, "(]"),
         "factor on all sizes (Mesh.MeshSizeFactor)");
   t.add("algorithm", &MeshOptions::algorithm, choice(kAlgorithms), names_text(names));
+  t.add("max_triangles", &MeshOptions::max_triangles, real(1, 1e12),
+        "error if Gmsh makes more boundary lines or triangles than this");
+  t.add("max_seconds", &MeshOptions::max_seconds, real(1, 1e7),
+        "error if Gmsh's meshing takes longer (wall seconds)");
   t.check([](const MeshOptions& o) {
     return o.size_max > 0 && o.size_min > o.size_max ? "need size_min <= size_max (0 = unset)" : "";
   });

@@ -9,7 +9,16 @@ struct MeshOptions {
   double size_max = 0;  ///< Mesh.MeshSizeMax
   double factor = 1;    ///< Mesh.MeshSizeFactor
   int algorithm = 6;    ///< Mesh.Algorithm: 6 = frontal-Delaunay
+  /// Caps on Gmsh's mesher, which runs in a child process (a size 1e9 times too
+  /// small would otherwise mesh for hours): boundary lines and triangles, and
+  /// wall seconds; 3/4 of the machine's memory is the third cap.
+  double max_triangles = 5e7;
+  double max_seconds = 600;
 };
+
+/// Gmsh's linear triangle mesh of the current model's CAD under `o` (made in
+/// a child process within o's caps, then put in the model), read back.
+Mesh gmsh_mesh(const std::string& input, const MeshOptions& o);
 
 /// `mesh`: a new linear triangle mesh of the input's CAD by Gmsh.
 Stage mesh_stage();
