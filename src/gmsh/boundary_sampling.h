@@ -8,8 +8,13 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "voronoi/seeded_boundary.h"
 
 namespace homesh::gmsh_adapter {
+
+using homesh::LoopCurve;
+using homesh::SeededBoundary;
+using homesh::SurfaceBoundary;
 
 /// A CAD curve: its parameter range, the model points at its ends (the same
 /// point twice for a closed curve) and whether it closes on itself.
@@ -18,19 +23,6 @@ struct CadCurve {
   double u0 = 0.0, u1 = 1.0;
   int start_point = -1, end_point = -1;
   bool closed = false;
-};
-
-/// A curve as a boundary loop runs along it: backwards if `reversed`.
-struct LoopCurve {
-  int tag = -1;
-  bool reversed = false;
-};
-
-/// A surface and its boundary loops, each a closed chain of curves in
-/// Gmsh's orientation (the surface on the left if its normal is +z).
-struct SurfaceBoundary {
-  int tag = -1;
-  std::vector<std::vector<LoopCurve>> loops;
 };
 
 /// Every surface of the current model. Throws homesh::Error if a surface's
@@ -51,20 +43,6 @@ std::vector<int> curves_in_group(const std::string& name);
 
 /// Every curve of the model that bounds a surface.
 std::vector<int> boundary_curves();
-
-/// The surfaces' boundary curves, sampled finely and seeded.
-struct SeededBoundary {
-  std::vector<SurfaceBoundary> surfaces;
-  /// Boundary seeds (2 by B) and where each lies: on a model point (dim 0)
-  /// or inside a curve (dim 1, with its parameter u).
-  Eigen::Matrix2Xd seeds;
-  std::vector<NodeClass> classes;
-  /// Per curve, its seeds from its start to its end, ends included (a closed
-  /// curve's point at both ends).
-  std::map<int, std::vector<int>> curve_seeds;
-  /// Per curve, `samples` + 1 points from start to end, uniform in u.
-  std::map<int, Eigen::Matrix2Xd> curve_samples;
-};
 
 /// Samples each boundary curve at `samples` + 1 parameters and seeds it at
 /// the parameters divide(u, x, closed) returns (increasing, both ends

@@ -20,6 +20,17 @@ CartesianGrid CartesianGrid::spanning(const Eigen::Vector2d& lo, const Eigen::Ve
   return g;
 }
 
+CartesianGrid CartesianGrid::covering(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int n,
+                                      int margin) {
+  const double ds = (hi - lo).maxCoeff() / (n - 1 - 2 * margin);
+  CartesianGrid g;
+  g.origin = lo - Eigen::Vector2d::Constant(margin * ds);
+  g.dx = g.dy = ds;
+  g.nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / ds)) + 1 + 2 * margin;
+  g.ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / ds)) + 1 + 2 * margin;
+  return g;
+}
+
 Eigen::Vector2i CartesianGrid::nearest_node(const Eigen::Vector2d& p) const {
   const int i = static_cast<int>(std::lround((p.x() - origin.x()) / dx));
   const int j = static_cast<int>(std::lround((p.y() - origin.y()) / dy));

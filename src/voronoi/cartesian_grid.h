@@ -18,6 +18,11 @@ struct CartesianGrid {
   static CartesianGrid spanning(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int nx,
                                 int ny);
 
+  /// The square-celled grid over the box [lo, hi] plus `margin` cells on each
+  /// side, with `n` nodes along the box's longer side.
+  static CartesianGrid covering(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int n,
+                                int margin);
+
   int node_count() const { return nx * ny; }
   int index(int i, int j) const { return i + nx * j; }
   /// The geometric step of Eqs 2.4-2.5, ds = min(dx, dy).

@@ -2,20 +2,16 @@
 #include <string>
 
 #include "pipeline/stage.h"
-#include "voronoi/lloyd_relaxation.h"
-#include "voronoi/metric_seeding.h"
+#include "voronoi/voronoi_mesh.h"
 
 namespace homesh {
 
-/// The voronoi stage's options (their meaning: the stage's option help).
+/// The voronoi stage's options (their meaning: the stage's option help): the
+/// mesher's own (voronoi_mesh) and what the stage makes of the model.
 struct VoronoiStageOptions {
-  std::string metric = "iso";            ///< iso, bl, viewN or a file
-  std::string seeds = "auto";            ///< auto or a file of interior seeds
-  SeedingOptions seeding;                ///< front_rows: all
-  LloydOptions lloyd;                    ///< iterations: 10
-  int smooth = 3;                        ///< smoothing sweeps (voronoi/metric_smoothing.h)
-  std::string engine = "fast_marching";  ///< a name of voronoi_engines()
-  int grid = 0;                          ///< grid nodes along the longer side; 0: automatic
+  std::string metric = "iso";  ///< iso, bl, viewN or a file
+  std::string seeds = "auto";  ///< auto or a file of interior seeds
+  VoronoiMeshOptions mesher;
 };
 
 /// `voronoi`: a new linear triangle mesh of the input's CAD, dual to the

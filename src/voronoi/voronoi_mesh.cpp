@@ -1,0 +1,337 @@
+#include "voronoi/voronoi_mesh.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "core/check_mesh.h"
+#include "core/error.h"
+#include "core/progress.h"
+#include "voronoi/boundary_encroachment.h"
+#include "voronoi/conforming_dual.h"
+#include "voronoi/loop_distance.h"
+#include "voronoi/metric_smoothing.h"
+#include "voronoi/refine_dual.h"
+#include "voronoi/window_regrowth.h"
+
+namespace homesh {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kCellsPerSize = 6.0;  // automatic grid: smallest size over this many cells
+constexpr int kGridMin = 200, kGridMax = 1500;
+constexpr double kBandCells = 8.0;   // the domain's distance is exact this many cells out
+constexpr int kLloydCoarsening = 2;  // Lloyd's iteration on a grid this many times coarser
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string point_text(const Eigen::Vector2d& p) {
+  std::ostringstream s;
+  s.precision(10);
+  s << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
+}
+
+// One surface's boundary: the seed loops (domain on the left) and the finely
+// sampled polygons.
+struct SurfaceLoops {
+  std::vector<std::array<int, 2>> segments;  // boundary seed pairs
+  std::vector<Eigen::Matrix2Xd> polygons;
+  Eigen::Vector2d lo, hi;
+};
+
+SurfaceLoops surface_loops(const SeededBoundary& b, const SurfaceBoundary& s) {
+  SurfaceLoops out;
+  std::vector<std::vector<std::array<int, 2>>> loop_segments;
+  for (const auto& loop : s.loops) {
+    std::vector<int> seeds;
+    std::vector<Eigen::Vector2d> pts;
+    for (const LoopCurve& c : loop) {
+      std::vector<int> on = b.curve_seeds.at(c.tag);
+      const Eigen::Matrix2Xd& x = b.curve_samples.at(c.tag);
+      if (c.reversed) std::reverse(on.begin(), on.end());
+      seeds.insert(seeds.end(), on.begin(), on.end() - 1);
+      for (Eigen::Index k = 0; k + 1 < x.cols(); ++k)
+        pts.push_back(x.col(c.reversed ? x.cols() - 1 - k : k));
+    }
+    loop_segments.emplace_back();
+    for (std::size_t k = 0; k < seeds.size(); ++k)
+      loop_segments.back().push_back({seeds[k], seeds[(k + 1) % seeds.size()]});
+    Eigen::Matrix2Xd poly(2, static_cast<Eigen::Index>(pts.size()));
+    for (std::size_t k = 0; k < pts.size(); ++k) poly.col(k) = pts[k];
+    out.polygons.push_back(poly);
+  }
+  // The domain on the left of every segment: a loop inside an even number of
+  // the others runs counter-clockwise, inside an odd number (a hole)
+  // clockwise, whatever Gmsh's orientation of the surface.
+  for (std::size_t l = 0; l < out.polygons.size(); ++l) {
+    const Eigen::Matrix2Xd& p = out.polygons[l];
+    double area = 0.0;
+    for (Eigen::Index k = 0; k < p.cols(); ++k) {
+      const Eigen::Vector2d a = p.col(k), c = p.col((k + 1) % p.cols());
+      area += 0.5 * (a.x() * c.y() - a.y() * c.x());
+    }
+    int depth = 0;
+    for (std::size_t o = 0; o < out.polygons.size(); ++o)
+      depth += o != l && inside_loops({out.polygons[o]}, p.col(0));
+    const bool flip = (area > 0) == (depth % 2 == 1);
+    for (auto [a, c] : loop_segments[l])
+      out.segments.push_back(flip ? std::array<int, 2>{c, a} : std::array<int, 2>{a, c});
+  }
+  out.lo = out.polygons.front().rowwise().minCoeff();
+  out.hi = out.polygons.front().rowwise().maxCoeff();
+  for (const auto& p : out.polygons) {
+    out.lo = out.lo.cwiseMin(p.rowwise().minCoeff());
+    out.hi = out.hi.cwiseMax(p.rowwise().maxCoeff());
+  }
+  return out;
+}
+
+// Interior seeds from a file: those inside this surface's polygons, each
+// checked against the boundary and the other seeds (within one cell of
+// another seed is coincident on the grid).
+Eigen::Matrix2Xd file_seeds(const std::string& path, const SeedList& list, const SurfaceLoops& s,
+                            const CartesianGrid& g, const Eigen::VectorXd& domain,
+                            const Eigen::Matrix2Xd& boundary, std::vector<char>& used) {
+  std::vector<Eigen::Vector2d> out;
+  std::vector<int> lines;
+  for (Eigen::Index k = 0; k < list.points.cols(); ++k) {
+    const Eigen::Vector2d p = list.points.col(k);
+    if (!inside_loops(s.polygons, p)) continue;
+    used[k] = 1;
+    const std::string at = path + ":" + std::to_string(list.lines[k]) + ": seed " + point_text(p);
+    const Eigen::Vector2i n = g.nearest_node(p);
+    if (domain(g.index(n.x(), n.y())) > -g.ds())
+      throw Error(at + " lies within one grid cell of the boundary");
+    for (Eigen::Index b = 0; b < boundary.cols(); ++b)
+      if ((boundary.col(b) - p).norm() < g.ds())
+        throw Error(at + " is within one grid cell of a boundary seed");
+    for (std::size_t q = 0; q < out.size(); ++q)
+      if ((out[q] - p).norm() < g.ds())
+        throw Error(at + (out[q] == p ? " coincides with" : " is within one grid cell of") +
+                    " the seed on line " + std::to_string(lines[q]));
+    out.push_back(p);
+    lines.push_back(list.lines[k]);
+  }
+  Eigen::Matrix2Xd m(2, static_cast<Eigen::Index>(out.size()));
+  for (std::size_t k = 0; k < out.size(); ++k) m.col(k) = out[k];
+  return m;
+}
+
+// The triangles of one surface, in its local seed numbering.
+struct SurfaceMesh {
+  Eigen::Matrix2Xd seeds;  // the surface's boundary seeds first, then its interior ones
+  std::vector<std::array<int, 3>> triangles;
+};
+
+// Thesis Ch 2 on one surface: seeds, growth, dual, regrowth, conforming fill.
+SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bseeds,
+                         const std::vector<std::array<int, 2>>& segments, const MetricField& metric,
+                         const VoronoiMeshOptions& o, std::vector<char>& list_used,
+                         VoronoiSurfaceReport& rep) {
+  const double extent = (loops.hi - loops.lo).maxCoeff();
+  const int n =
+      o.grid > 0
+          ? o.grid
+          : std::clamp(static_cast<int>(std::ceil(extent / (metric.min_speed() / kCellsPerSize))),
+                       kGridMin, kGridMax);
+  VoronoiProblem p;
+  p.grid = CartesianGrid::covering(loops.lo, loops.hi, n, 3);
+  p.metric = metric;
+  p.domain = loop_signed_distance(p.grid, loops.polygons, kBandCells * p.grid.ds());
+  rep.grid = p.grid;
+  rep.boundary_seeds = bseeds.cols();
+
+  const auto seeding = Clock::now();
+  // Automatic seeds: the front rows advancing from the boundary segments,
+  // then Poisson-disc seeds spaced from both where the fronts meet.
+  const bool auto_seeds = o.seed_list == nullptr;
+  const FrontSeeds front =
+      auto_seeds ? metric_front_seeds(p.grid, p.domain, metric, bseeds, segments, o.seeding)
+                 : FrontSeeds{};
+  Eigen::Matrix2Xd held(2, bseeds.cols() + front.seeds.cols());
+  held << bseeds, front.seeds;
+  // Lloyd's iteration holds the first row (and the corner seeds) and
+  // relaxes the others where the fronts meet; rows are its fixed points
+  // elsewhere, but the collisions need it.
+  const Eigen::Index hold = bseeds.cols() + front.first_row;
+  const Eigen::Matrix2Xd interior =
+      auto_seeds
+          ? metric_interior_seeds(p.grid, p.domain, metric, held, o.seeding)
+          : file_seeds(o.seed_path, *o.seed_list, loops, p.grid, p.domain, bseeds, list_used);
+  p.seeds.resize(2, held.cols() + interior.cols());
+  p.seeds << held, interior;
+  Progress phase("phase", 3);
+  if (auto_seeds && o.lloyd.iterations > 0) {
+    phase.update(0, "Lloyd's iteration on the seeds");
+    // On a grid kLloydCoarsening times coarser: a centroid needs far fewer
+    // cells per region than a dual triangle does.
+    VoronoiProblem coarse = p;
+    coarse.grid =
+        CartesianGrid::covering(loops.lo, loops.hi, std::max(kGridMin, n / kLloydCoarsening), 3);
+    coarse.domain =
+        loop_signed_distance(coarse.grid, loops.polygons, kBandCells * coarse.grid.ds());
+    p.seeds = lloyd_relaxation(coarse, static_cast<int>(hold), o.engine, o.lloyd);
+  }
+  // Automatic seeds inside a boundary segment's diametral circle go: that
+  // segment could be in no dual.
+  std::vector<int> encroaching;
+  if (auto_seeds) {
+    encroaching = encroaching_seeds(p.seeds, static_cast<int>(bseeds.cols()), segments);
+    std::vector<int> keep;
+    for (int k = 0, e = 0; k < p.seeds.cols(); ++k)
+      if (e < static_cast<int>(encroaching.size()) && encroaching[e] == k)
+        ++e;
+      else
+        keep.push_back(k);
+    p.seeds = Eigen::Matrix2Xd(p.seeds(Eigen::all, keep));
+  }
+  rep.encroaching_dropped = static_cast<long>(encroaching.size());
+  rep.front_seeds = front.seeds.cols() - std::count_if(encroaching.begin(), encroaching.end(),
+                                                       [&](int k) { return k < held.cols(); });
+  rep.interior_seeds = p.seeds.cols() - bseeds.cols() - rep.front_seeds;
+  rep.seeding_seconds = seconds_since(seeding);
+
+  phase.update(1, "growing " + std::to_string(p.seeds.cols()) + " crystals");
+  const auto growth = Clock::now();
+  RefineOptions refine;
+  refine.segments = segments;
+  const RefinedDual r = refine_dual(p, o.engine, {}, refine);
+  rep.growth_seconds = seconds_since(growth);
+  rep.dual_size = static_cast<long>(r.result.dual.triangles.size());
+  rep.dual_checked = r.ok();
+  rep.refinement_rounds = static_cast<long>(r.added.size());
+  for (const int a : r.added) rep.refined_seeds += a;
+  // Where the dual misses the boundary, a finer grid round the spot.
+  p.seeds = r.seeds;
+  phase.update(2, "regrowing where the dual missed the boundary");
+  const RegrownDual w = regrow_windows(
+      p, r.result.dual.triangles, r.result.dual.vertices, segments,
+      [&](const CartesianGrid& g) {
+        return loop_signed_distance(g, loops.polygons, kBandCells * g.ds());
+      },
+      o.engine);
+  rep.windows = w.windows;
+  if (w.windows > 0) {
+    rep.missed_segments =
+        static_cast<long>(missed_segments(segments, r.result.dual.triangles).size());
+    rep.window_nodes = w.window_nodes;
+    rep.finer_windows = w.finer_windows;
+    rep.regrown_seeds = w.seeds.cols() - r.seeds.cols();
+  }
+  const ConformingTriangulation c = conforming_triangulation(w.seeds, segments, w.triangles);
+  rep.segments = static_cast<long>(segments.size());
+  rep.boundary_missed = c.boundary_missed;
+  rep.dual_dropped = c.dual_dropped;
+  rep.from_dual = c.from_dual;
+  rep.filled = c.filled;
+  return {w.seeds, c.triangles};
+}
+
+}  // namespace
+
+// Thesis Ch 2 (Sections 2.3-2.5) on every surface, the boundary seeds shared.
+Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
+                  const VoronoiMeshOptions& o, VoronoiReport* report) {
+  VoronoiReport local;
+  VoronoiReport& rep = report ? *report : local;
+  rep = {};
+  std::vector<char> list_used(o.seed_list ? o.seed_list->points.cols() : 0, 0);
+
+  std::vector<Eigen::Vector2d> nodes;
+  for (Eigen::Index k = 0; k < boundary.seeds.cols(); ++k) nodes.push_back(boundary.seeds.col(k));
+  std::vector<NodeClass> node_class = boundary.classes;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> triangle_surface;
+  for (const SurfaceBoundary& surface : boundary.surfaces) {
+    const SurfaceLoops loops = surface_loops(boundary, surface);
+    // This surface's boundary seeds, renumbered from 0.
+    std::vector<int> local_to_node;
+    std::map<int, int> node_to_local;
+    for (const auto& [a, b] : loops.segments)
+      for (const int s : {a, b})
+        if (!node_to_local.count(s)) {
+          node_to_local[s] = static_cast<int>(local_to_node.size());
+          local_to_node.push_back(s);
+        }
+    Eigen::Matrix2Xd bseeds(2, static_cast<Eigen::Index>(local_to_node.size()));
+    for (std::size_t k = 0; k < local_to_node.size(); ++k)
+      bseeds.col(k) = boundary.seeds.col(local_to_node[k]);
+    std::vector<std::array<int, 2>> segments;
+    for (const auto& [a, b] : loops.segments)
+      segments.push_back({node_to_local[a], node_to_local[b]});
+
+    VoronoiSurfaceReport sr;
+    sr.tag = surface.tag;
+    const SurfaceMesh sm = mesh_surface(loops, bseeds, segments, metric, o, list_used, sr);
+    rep.dual_triangles += static_cast<int>(sr.from_dual);
+    rep.filled_triangles += static_cast<int>(sr.filled);
+    rep.refined_seeds += static_cast<int>(sr.refined_seeds);
+    rep.surfaces.push_back(sr);
+
+    // Interior and added seeds become nodes of the surface.
+    std::vector<int> to_node(local_to_node);
+    for (Eigen::Index k = bseeds.cols(); k < sm.seeds.cols(); ++k) {
+      to_node.push_back(static_cast<int>(nodes.size()));
+      nodes.push_back(sm.seeds.col(k));
+      node_class.push_back({2, surface.tag, std::numeric_limits<double>::quiet_NaN()});
+    }
+    for (const auto& t : sm.triangles) {
+      triangles.push_back({to_node[t[0]], to_node[t[1]], to_node[t[2]]});
+      triangle_surface.push_back(surface.tag);
+    }
+  }
+  if (o.seed_list)
+    for (Eigen::Index k = 0; k < o.seed_list->points.cols(); ++k)
+      if (!list_used[k])
+        throw Error(o.seed_path + ":" + std::to_string(o.seed_list->lines[k]) + ": seed " +
+                    point_text(o.seed_list->points.col(k)) + " lies outside the domain");
+
+  // Nodes no triangle uses (interior seeds cut off by a boundary chord) go.
+  std::vector<int> renumber(nodes.size(), -1);
+  for (const auto& t : triangles)
+    for (const int v : t) renumber[v] = 0;
+  for (std::size_t k = 0; k < boundary.classes.size(); ++k) renumber[k] = 0;
+  int count = 0;
+  for (int& r : renumber) r = r < 0 ? (++rep.dropped_seeds, -1) : count++;
+  Mesh m;
+  m.order = 1;
+  m.x.resize(2, count);
+  m.node_class.resize(count);
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    if (renumber[k] >= 0) {
+      m.x.col(renumber[k]) = nodes[k];
+      m.node_class[renumber[k]] = node_class[k];
+    }
+  m.tri.resize(3, static_cast<Eigen::Index>(triangles.size()));
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) m.tri(k, f) = renumber[triangles[f][k]];
+  m.tri_entity = triangle_surface;
+  std::vector<std::array<int, 2>> lines;
+  for (const auto& [tag, on] : boundary.curve_seeds)
+    for (std::size_t k = 0; k + 1 < on.size(); ++k) {
+      lines.push_back({renumber[on[k]], renumber[on[k + 1]]});
+      m.line_entity.push_back(tag);
+    }
+  m.line.resize(2, static_cast<Eigen::Index>(lines.size()));
+  for (std::size_t k = 0; k < lines.size(); ++k) m.line.col(k) << lines[k][0], lines[k][1];
+  for (std::size_t k = 0; k < boundary.classes.size(); ++k)
+    if (boundary.classes[k].dim == 0) {
+      m.point_node.push_back(renumber[k]);
+      m.point_entity.push_back(boundary.classes[k].tag);
+    }
+  if (o.smooth > 0) {
+    std::vector<char> free_node(m.node_class.size());
+    for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
+    rep.smoothing_moves = smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
+  }
+  return m;
+}
+
+}  // namespace homesh

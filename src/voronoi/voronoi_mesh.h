@@ -1,0 +1,74 @@
+#pragma once
+// The crystal-growth Voronoi mesher of thesis Chapter 2 as one library call:
+// seeds placed in the metric (front rows, Poisson-disc, Lloyd's iteration),
+// crystals grown as level sets in the Riemannian metric (Sections 2.3-2.4),
+// the dual Delaunay triangulation with its refinement and regrowth where it
+// misses the boundary (Section 2.5), a constrained fill where it still does
+// not conform, and smoothing of the interior nodes. Gmsh-free: the boundary
+// comes sampled and seeded (gmsh/boundary_sampling.h makes it from the CAD).
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "voronoi/cartesian_grid.h"
+#include "voronoi/lloyd_relaxation.h"
+#include "voronoi/metric_field.h"
+#include "voronoi/metric_seeding.h"
+#include "voronoi/seeded_boundary.h"
+#include "voronoi/voronoi_files.h"
+
+namespace homesh {
+
+/// Every default of the mesher (the voronoi stage's options map onto these).
+struct VoronoiMeshOptions {
+  SeedingOptions seeding;                ///< automatic seeds: front rows, Poisson-disc
+  LloydOptions lloyd;                    ///< on the automatic seeds (front rows held)
+  int smooth = 3;                        ///< smoothing sweeps (voronoi/metric_smoothing.h)
+  std::string engine = "fast_marching";  ///< a name of voronoi_engines()
+  int grid = 0;  ///< grid nodes along a surface's longer side; 0: its smallest size over 6 cells
+  /// Interior seeds from a file instead of the automatic ones (path: for
+  /// messages); every seed must lie in some surface.
+  const SeedList* seed_list = nullptr;
+  std::string seed_path;
+};
+
+/// What the mesher did on one surface.
+struct VoronoiSurfaceReport {
+  int tag = -1;
+  CartesianGrid grid;
+  long boundary_seeds = 0, front_seeds = 0, interior_seeds = 0;
+  long encroaching_dropped = 0;  ///< automatic seeds in a boundary segment's diametral circle
+  double seeding_seconds = 0, growth_seconds = 0;
+  long dual_size = 0;         ///< triangles of the first dual
+  bool dual_checked = false;  ///< the refined dual passed check_dual
+  long refinement_rounds = 0;
+  long refined_seeds = 0;    ///< seeds added at faulty triple points
+  long missed_segments = 0;  ///< boundary segments the dual missed before regrowth
+  int windows = 0, window_nodes = 0, finer_windows = 0;
+  long regrown_seeds = 0;
+  long segments = 0, boundary_missed = 0, dual_dropped = 0;  ///< after regrowth
+  long from_dual = 0, filled = 0;                            ///< triangles of the result by origin
+};
+
+/// What the mesher did, for the log and the stage's results.
+struct VoronoiReport {
+  std::vector<VoronoiSurfaceReport> surfaces;
+  int dual_triangles = 0;    ///< triangles from the dual
+  int filled_triangles = 0;  ///< triangles of the constrained fill (CGAL)
+  int refined_seeds = 0;     ///< seeds added at faulty triple points
+  int dropped_seeds = 0;     ///< interior seeds cut off by a boundary chord
+  int smoothing_moves = 0;
+};
+
+/// A linear triangle mesh of the surfaces of `boundary` (nodes: the boundary
+/// seeds first, in order, classified as boundary.classes; then the interior
+/// nodes, classified on their surface; lines: the boundary seeds' segments of
+/// each curve, tagged by curve; points: the seeds on model points), dual to
+/// the crystal-growth Voronoi diagram of its seeds in `metric`. The mesh's
+/// entities and physical groups are left empty for the caller. Throws
+/// homesh::Error naming the seed file for a seed outside every surface or too
+/// close to the boundary or another seed.
+Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
+                  const VoronoiMeshOptions& options = {}, VoronoiReport* report = nullptr);
+
+}  // namespace homesh
