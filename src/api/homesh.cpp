@@ -6,6 +6,7 @@
 #include "gmsh/gmsh_call.h"
 #include "gmsh/option_scope.h"
 #include "gmsh/read_model.h"
+#include "gmsh/view_style.h"
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
@@ -91,6 +92,7 @@ Result run(const std::string& name, const StageOptions& options) {
     if (!ctx.mesh) return r;
     gmsh_adapter::gmsh_call("writing the mesh into the current Gmsh model", [&] {
       r.views = gmsh_adapter::add_views(ctx.fields, gmsh_adapter::write_model(*ctx.mesh));
+      if (ctx.mesh->order > 1) gmsh_adapter::draw_edges_curved();  // as opening the file does
     });
     r.has_mesh = true;
     r.order = ctx.mesh->order;
