@@ -11,6 +11,7 @@
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
 #include "pipeline/context.h"
+#include "pipeline/group_context_by_entity.h"
 #include "pipeline/quality_report.h"
 #include "pipeline/stage_registry.h"
 #include "quality/mesh_validity.h"
@@ -85,6 +86,7 @@ Result run(const std::string& name, const StageOptions& options) {
     {
       const Progress label(s.name, 0);
       s.run(ctx, checked);
+      group_context_by_entity(ctx);
     }
 
     Result r;

@@ -23,6 +23,7 @@
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
+#include "pipeline/group_context_by_entity.h"
 #include "pipeline/quality_report.h"
 #include "pipeline/stage_registry.h"
 #include "quality/mesh_validity.h"
@@ -147,6 +148,7 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
                                    std::to_string(plan.size()) + " " + plan[k].first->name,
                                0);
     plan[k].first->run(ctx, plan[k].second);
+    group_context_by_entity(ctx);
   }
 }
 

@@ -87,6 +87,28 @@ def test_every_stage(tmp_path, stages):
     check(msh, [VALIDITY] + ([Q4] if "quality" in " ".join(stages) else []))
 
 
+TWO_SURFACES = """SetFactory("OpenCASCADE");
+Rectangle(1) = {0, 0, 0, 1, 1};
+Rectangle(2) = {1, 0, 0, 1, 1};
+BooleanFragments{ Surface{1}; Delete; }{ Surface{2}; Delete; }
+Physical Surface("fluid") = {1, 2};
+Physical Curve("wall") = Curve In BoundingBox{-0.01, -0.01, -0.01, 2.01, 0.01, 0.01};
+Mesh.MeshSizeMax = 0.25;
+"""
+
+
+def test_layers_across_two_surfaces(tmp_path):
+    """The layers stage appends each surface's new triangles after all the old ones; the
+    elements are grouped by surface again before they are tagged and written."""
+    geo, msh = tmp_path / "two.geo", str(tmp_path / "two.msh")
+    geo.write_text(TWO_SURFACES)
+    cli(str(geo), "-q", "-m", "mesh", "-m", "layers:walls=wall:n=2:first=0.02:ratio=1.2", msh)
+    mesh = check(msh, [VALIDITY, "homesh: radius ratio (Eq 4.17)"])
+    assert len([b for b in mesh.cells if b.type == "triangle"]) == 2
+    ratios = np.concatenate(mesh.cell_data["homesh: radius ratio (Eq 4.17)"])
+    assert len(np.unique(ratios)) > 10  # values that tell elements apart
+
+
 # meshio 7.0's MSH 2.2 reader splits element data by len() of (type, cells) tuples,
 # 2 each, so no MSH 2.2 file with element data reads (Gmsh's own included); its
 # MSH 4.1 reader, homesh's default, has no such bug.
