@@ -80,7 +80,9 @@ def test_every_order(tmp_path, p):
     ["-m", "mesh:factor=2", "-m", "layers:walls=hole:n=3:first=0.01:ratio=1.2", "-m", "curve:p=3",
      "-m", "quality"],
     ["-m", "voronoi", "-m", "curve:p=2", "-m", "quality:measures=Q4"],
-], ids=["curve", "layers", "voronoi"])
+    ["-m", "mesh:factor=2", "-m", "curve:p=3", "-m", "optimise"],
+    ["-m", "mesh:factor=2", "-m", "rotate:step=5:max=20"],
+], ids=["curve", "layers", "voronoi", "optimise", "rotate"])
 def test_every_stage(tmp_path, stages):
     msh = str(tmp_path / "out.msh")
     cli(os.path.join(GEO, "plate_hole.geo"), "-q", *stages, msh)
