@@ -34,13 +34,7 @@ def view_names(msh):
 
 def script(view_index, edges, centre, scale, size, adapt, scale_bar, png):
     """The Gmsh commands that set up the picture and print it to `png`."""
-    lines = [
-        "General.MenuWidth = 0;",
-        f"General.GraphicsWidth = {size[0]};",
-        f"General.GraphicsHeight = {size[1]};",
-        "General.SmallAxes = 0;",
-        "General.BackgroundGradient = 0;",
-        "General.Color.Background = {255, 255, 255};",
+    lines = window(size) + [
         "Geometry.Points = 0;",
         "Geometry.Curves = 0;",
         "Mesh.Points = 0;",
@@ -92,6 +86,45 @@ def render(msh, png, view=None, edges=False, centre=None, scale=1.0, size=(800, 
     subprocess.run(["xvfb-run", "-a", "-s", screen, "gmsh", os.path.abspath(msh), geo],
                    check=True, timeout=timeout, stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL)
+    if not os.path.exists(png):
+        raise RuntimeError(f"Gmsh wrote no picture {png}")
+    return png
+
+
+def window(size):
+    """Gmsh commands for a graphics window of `size` pixels on white, the model fitted."""
+    return [
+        "General.MenuWidth = 0;",
+        f"General.GraphicsWidth = {size[0]};",
+        f"General.GraphicsHeight = {size[1]};",
+        "General.SmallAxes = 0;",
+        "General.BackgroundGradient = 0;",
+        "General.Color.Background = {255, 255, 255};",
+    ]
+
+
+def render_as_opened(files, png, size=(600, 600), timeout=120):
+    """Print what a user sees on `gmsh FILES[0] -new FILES[1] ...` to `png`.
+
+    Each file is read into a model of its own (Gmsh's -new: homesh files share
+    element tags), its sidecar merged right after it; only the window (size,
+    white background) is set, every view and mesh option is the files' own.
+    Returns the path of the picture.
+    """
+    if shutil.which("xvfb-run") is None:
+        raise RuntimeError("xvfb-run not found (Debian package xvfb)")
+    png = os.path.abspath(png)
+    geo = png + ".geo"
+    with open(geo, "w") as f:
+        f.write("\n".join(window(size) + [f'Print "{png}";', "Exit;"]) + "\n")
+    if os.path.exists(png):
+        os.remove(png)
+    args = []
+    for k, msh in enumerate(files):
+        args += (["-new"] if k else []) + [os.path.abspath(msh)]
+    screen = f"-screen 0 {size[0] + 64}x{size[1] + 64}x24"
+    subprocess.run(["xvfb-run", "-a", "-s", screen, "gmsh", *args, geo], check=True, timeout=timeout,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     if not os.path.exists(png):
         raise RuntimeError(f"Gmsh wrote no picture {png}")
     return png

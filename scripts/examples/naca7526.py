@@ -183,7 +183,7 @@ def picture(msh, png):
     import matplotlib.image
 
     def shot(name, centre, scale, size, scale_bar):
-        path = gui_shot.render(msh, f"{png}.{name}.png", view="Q4", edges=True, centre=centre,
+        path = gui_shot.render(msh, f"{png}.{name}.png", view="homesh: Q4 Equal volume, at nodes", edges=True, centre=centre,
                                scale=scale, size=size, scale_bar=scale_bar)
         image = matplotlib.image.imread(path)[:, :, :3]
         os.remove(path)

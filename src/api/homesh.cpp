@@ -6,10 +6,12 @@
 #include "gmsh/gmsh_call.h"
 #include "gmsh/option_scope.h"
 #include "gmsh/read_model.h"
+#include "gmsh/view_style.h"
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
 #include "pipeline/context.h"
+#include "pipeline/group_context_by_entity.h"
 #include "pipeline/quality_report.h"
 #include "pipeline/stage_registry.h"
 #include "quality/mesh_validity.h"
@@ -84,6 +86,7 @@ Result run(const std::string& name, const StageOptions& options) {
     {
       const Progress label(s.name, 0);
       s.run(ctx, checked);
+      group_context_by_entity(ctx);
     }
 
     Result r;
@@ -91,6 +94,7 @@ Result run(const std::string& name, const StageOptions& options) {
     if (!ctx.mesh) return r;
     gmsh_adapter::gmsh_call("writing the mesh into the current Gmsh model", [&] {
       r.views = gmsh_adapter::add_views(ctx.fields, gmsh_adapter::write_model(*ctx.mesh));
+      if (ctx.mesh->order > 1) gmsh_adapter::draw_edges_curved();  // as opening the file does
     });
     r.has_mesh = true;
     r.order = ctx.mesh->order;

@@ -79,7 +79,10 @@ std::vector<StageInfo> stages();
 
 /// Runs stage `name` on the current Gmsh model: reads its mesh (if any),
 /// transforms it, and writes the mesh and the stage's fields (as views) back
-/// into the model.
+/// into the model. The views are styled as a user who opens the written file
+/// sees them (the certified minJ/maxJ shown on [0, 1], drawn curved, the other
+/// views hidden; high-order edges drawn curved), so gmsh::fltk::run() after
+/// homesh shows the same.
 Result run(const std::string& name, const StageOptions& options = {});
 
 /// One function per stage, named after it: run("mesh", options) etc.

@@ -1,10 +1,12 @@
 #pragma once
-// A scalar field over the triangles of a mesh, written to `.msh` as a Gmsh view:
-// one value per element (ElementData) or one value per node of each element in
-// the element's own node order (ElementNodeData, drawn curved by Gmsh with
-// AdaptVisualizationGrid).
+// A scalar field over the triangles of a mesh, written to `.msh` as a Gmsh view
+// named `name` (gmsh/views.h): one value per element (ElementData, which
+// meshio reads as cell data) or one value per node of each element in the
+// element's own node order (ElementNodeData). Gmsh draws both curved
+// (gmsh/view_style.h).
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 namespace homesh {
 
@@ -13,8 +15,18 @@ struct Field {
 
   std::string name;
   Kind kind = Kind::Element;
-  /// Element: 1 by #triangles. ElementNode: nodes-per-triangle by #triangles.
+  /// Element: 1 by #triangles. ElementNode: nodes-per-triangle by #triangles,
+  /// or by #elements if `elements` lists some.
   Eigen::MatrixXd values;
+  /// A quality in [0, 1], 1 ideal, <= 0 invalid: drawn on the fixed range
+  /// [0, 1]; points and lines of the file get 1 in its element data. Otherwise
+  /// drawn on the values' own range, points and lines get 0.
+  bool quality = true;
+  /// Shown when the file is opened (one field, so one colour scale, shows).
+  bool shown = false;
+  /// ElementNode only: the triangles it covers, one column of values each
+  /// (empty: every triangle). A view of a few elements, to find them in Gmsh.
+  std::vector<int> elements = {};
 };
 
 }  // namespace homesh

@@ -8,6 +8,7 @@
 
 #include "core/check_mesh.h"
 #include "core/error.h"
+#include "gmsh/ungrouped_group.h"
 
 namespace homesh::gmsh_adapter {
 namespace {
@@ -41,6 +42,7 @@ void read_entities(Mesh& m) {
     if (dim > 2) continue;
     PhysicalGroup g{dim, tag, {}, {}};
     gmsh::model::getPhysicalName(dim, tag, g.name);
+    if (g.name == kUngroupedName) continue;  // written for meshio only
     gmsh::model::getEntitiesForPhysicalGroup(dim, tag, g.entities);
     m.physicals.push_back(g);
   }

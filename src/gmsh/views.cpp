@@ -2,26 +2,58 @@
 
 #include <gmsh.h>
 
+#include "gmsh/view_style.h"
+
 namespace homesh::gmsh_adapter {
+namespace {
+
+// Element order of the triangles written from `tags` (1 if there are none).
+int triangle_order(const ModelTags& tags, std::size_t num_triangles) {
+  if (num_triangles == 0) return 1;
+  int type = 0;
+  std::vector<std::size_t> nodes;
+  gmsh::model::mesh::getElement(tags.first_triangle, type, nodes);
+  std::string name;
+  int dim = 0, order = 1, num_nodes = 0, num_primary = 0;
+  std::vector<double> local;
+  gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
+  return order;
+}
+
+}  // namespace
 
 std::vector<int> add_views(const std::vector<Field>& fields, const ModelTags& tags) {
   std::string model;
   gmsh::model::getCurrent(model);
   std::vector<int> view_tags;
+  bool shown = false;
   for (const Field& f : fields) {
+    if (f.values.cols() == 0) continue;  // Gmsh refuses a view without data
     const int view = gmsh::view::add(f.name);
-    std::vector<std::size_t> element_tags(static_cast<std::size_t>(f.values.cols()));
+    const auto triangles = static_cast<std::size_t>(f.values.cols());
+    const bool element = f.kind == Field::Kind::Element;
+    // Element data covers the points and lines (tags 1 .. first_triangle - 1) too.
+    const std::size_t first = element ? 1 : tags.first_triangle;
+    const std::size_t others = tags.first_triangle - first;
+    std::vector<std::size_t> element_tags(others + triangles);
     std::vector<std::vector<double>> data(element_tags.size());
-    for (std::size_t e = 0; e < element_tags.size(); ++e) {
-      element_tags[e] = tags.first_triangle + e;
-      const auto col = f.values.col(static_cast<Eigen::Index>(e));
-      data[e].assign(col.data(), col.data() + col.size());
+    for (std::size_t k = 0; k < others; ++k) {
+      element_tags[k] = first + k;
+      data[k] = {f.quality ? 1.0 : 0.0};
     }
-    gmsh::view::addModelData(view, 0, model,
-                             f.kind == Field::Kind::Element ? "ElementData" : "ElementNodeData",
+    for (std::size_t e = 0; e < triangles; ++e) {
+      element_tags[others + e] =
+          tags.first_triangle + (f.elements.empty() ? e : static_cast<std::size_t>(f.elements[e]));
+      const auto col = f.values.col(static_cast<Eigen::Index>(e));
+      data[others + e].assign(col.data(), col.data() + col.size());
+    }
+    gmsh::view::addModelData(view, 0, model, element ? "ElementData" : "ElementNodeData",
                              element_tags, data);
+    style_view(view, f, triangle_order(tags, triangles));
+    shown = shown || f.shown;
     view_tags.push_back(view);
   }
+  if (shown) hide_other_views(view_tags);
   return view_tags;
 }
 

@@ -7,6 +7,8 @@
 #include "core/file_extension.h"
 #include "gmsh/gmsh_call.h"
 #include "gmsh/option_scope.h"
+#include "gmsh/ungrouped_group.h"
+#include "gmsh/view_style.h"
 
 namespace homesh::gmsh_adapter {
 namespace {
@@ -29,19 +31,6 @@ void check_section_written(const AtomicFile& file, std::uint64_t before, const s
 
 }  // namespace
 
-std::string sidecar_options(int num_views) {
-  std::string s =
-      "// homesh display settings, merged by Gmsh when it opens the .msh beside this file.\n"
-      "Mesh.NumSubEdges = 8;  // draw high-order edges curved\n";
-  for (int i = 0; i < num_views; ++i) {
-    const std::string v = "View[" + std::to_string(i) + "].";
-    s += v + "AdaptVisualizationGrid = 1;  // refine curved fields for display\n";
-    s += v + "MaxRecursionLevel = 3;\n";
-    s += v + "TargetError = 1e-3;\n";
-  }
-  return s;
-}
-
 void check_msh_path(const std::string& path) {
   const std::string ext = file_extension(path);
   if (ext != "msh")
@@ -61,10 +50,14 @@ void write_msh(const std::string& path, const std::vector<int>& view_tags,
                 std::to_string(version));
   AtomicFile msh(path);
   AtomicFile opt(path + ".opt");
+  std::string sidecar;
   gmsh_call("cannot write '" + path + "'", [&] {
     OptionScope options;  // the user's MshFileVersion and Binary are kept, as Gmsh's own write does
     options.set("Mesh.SaveAll", 1);
-    gmsh::write(msh.temp_path());
+    {
+      const UngroupedGroups for_meshio;
+      gmsh::write(msh.temp_path());
+    }
     check_section_written(msh, 0, "mesh");
     options.set("PostProcessing.SaveMesh", 0);
     for (int v : view_tags) {
@@ -72,9 +65,10 @@ void write_msh(const std::string& path, const std::vector<int>& view_tags,
       gmsh::view::write(v, msh.temp_path(), true);
       check_section_written(msh, before, "view " + std::to_string(v));
     }
+    sidecar = sidecar_options(view_tags);
   });
   msh.append("$HomeshProvenance\n" + provenance + "\n$EndHomeshProvenance\n");
-  opt.append(sidecar_options(static_cast<int>(view_tags.size())));
+  opt.append(sidecar);
   msh.commit();
   opt.commit();
 }

@@ -1,7 +1,8 @@
 #pragma once
 // `.msh` output: the current model's mesh and the given views in one MSH
 // file, the homesh command line recorded in it, and a sidecar `PATH.opt` that
-// Gmsh merges when it opens PATH, so curved fields display curved.
+// Gmsh merges when it opens PATH: the views styled as they are in this process
+// (gmsh/view_style.h), so the file opens as homesh's views look here.
 #include <string>
 #include <vector>
 
@@ -22,8 +23,5 @@ void write_msh(const std::string& path, const std::vector<int>& view_tags,
 /// Throws homesh::Error naming `path` unless it ends in `.msh` and can be
 /// written (AtomicFile::check_target): for checking an output before any work.
 void check_msh_path(const std::string& path);
-
-/// The sidecar options text for a file holding `num_views` views.
-std::string sidecar_options(int num_views);
 
 }  // namespace homesh::gmsh_adapter

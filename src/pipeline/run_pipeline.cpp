@@ -23,6 +23,7 @@
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
+#include "pipeline/group_context_by_entity.h"
 #include "pipeline/quality_report.h"
 #include "pipeline/stage_registry.h"
 #include "quality/mesh_validity.h"
@@ -147,6 +148,7 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
                                    std::to_string(plan.size()) + " " + plan[k].first->name,
                                0);
     plan[k].first->run(ctx, plan[k].second);
+    group_context_by_entity(ctx);
   }
 }
 
@@ -156,9 +158,9 @@ void write_output(const std::string& path, const std::string& provenance, Contex
   // Every output carries its certified validity; an invalid mesh is never written silently.
   const MeshValidity v = mesh_validity(m);
   if (std::none_of(ctx.fields.begin(), ctx.fields.end(),
-                   [](const Field& f) { return f.name == "minJ/maxJ"; })) {
+                   [](const Field& f) { return f.name == kValidityFieldName; })) {
     ctx.log.info("{}", validity_line(m, v));
-    ctx.set_field({"minJ/maxJ", Field::Kind::Element, v.ratio.transpose()});
+    ctx.set_field({kValidityFieldName, Field::Kind::Element, v.ratio.transpose(), true, true});
   }
   if (v.invalid > 0 && !ctx.keep_invalid)
     throw Error(path + ": not written: " + std::to_string(v.invalid) +

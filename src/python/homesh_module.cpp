@@ -90,11 +90,14 @@ PYBIND11_MODULE(homesh, m) {
         "(checked before the stage starts); returns order, node and triangle counts, the tags "
         "of the views it added, the numbers the stage reports (results: counts as int, flags "
         "as bool, measurements as float) and the mesh's certified validity (see validity(), "
-        "whose key names quality's results share).");
+        "whose key names quality's results share). The views are styled as opening the "
+        "written file shows them (certified minJ/maxJ shown on [0, 1], drawn curved, the others "
+        "hidden): gmsh.fltk.run() afterwards shows the same.");
   m.def("write", &write_file, py::arg("path"), py::arg("keep_invalid") = false,
         "Certify the current model's mesh, then write it and its views to a .msh file (the MSH "
-        "version and encoding of Gmsh's options, atomically) with its .opt sidecar; refuses a mesh "
-        "not certified valid unless keep_invalid.");
+        "version and encoding of Gmsh's options, atomically) with its .opt sidecar, which styles "
+        "the views as they are in this process; refuses a mesh not certified valid unless "
+        "keep_invalid.");
   m.def("set_quiet", &api::set_quiet, py::arg("quiet") = true,
         "Silence homesh's reports and progress (warnings stay).");
   m.def(

@@ -80,6 +80,14 @@ const std::vector<Measure>& measures() {
   return table;
 }
 
+std::string element_field_name(const Measure& q) {
+  return "homesh: " + q.name + " " + q.title + ", element minimum";
+}
+
+std::string node_field_name(const Measure& q) {
+  return "homesh: " + q.name + " " + q.title + ", at nodes";
+}
+
 const Measure& measure(const std::string& name) {
   const std::string key = upper(name);
   for (const Measure& m : measures()) {

@@ -66,6 +66,13 @@ struct Measure {
 /// All measures, in thesis order Q1 .. Q17 (without Q15).
 const std::vector<Measure>& measures();
 
+/// Names of the fields (Gmsh views, meshio cell data) of measure q: its
+/// minimum over each element, "homesh: Q4 Equal volume, element minimum", and
+/// its values at each element's nodes, "homesh: Q4 Equal volume, at nodes".
+/// The formula and thesis equation are in `homesh --measures`.
+std::string element_field_name(const Measure& q);
+std::string node_field_name(const Measure& q);
+
 /// The measure called `name` ("Q7"; case-insensitive). Throws homesh::Error
 /// naming it and listing the valid names if there is none.
 const Measure& measure(const std::string& name);

@@ -11,6 +11,10 @@
 
 namespace homesh {
 
+/// Name of the field of `ratio` (its Gmsh view, its meshio cell data): not
+/// Gmsh's own "minJ/maxJ", the view of its AnalyseMeshQuality plugin.
+constexpr const char* kValidityFieldName = "homesh: certified minJ/maxJ";
+
 struct MeshValidity {
   /// #triangles Gmsh's minJ/maxJ of each triangle (scaled_jacobian_ratio).
   Eigen::VectorXd ratio;

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <map>
 #include <regex>
 
 #include "../support/gmsh_session.h"
@@ -55,14 +56,62 @@ TEST_CASE("quality stage: certified validity, views and a report", "[app]") {
   gmsh::open(out);
   std::vector<int> views;
   gmsh::view::getTags(views);
-  REQUIRE(views.size() == 5);  // minJ/maxJ, Q4 min, Q4, Q6 min, Q6
+  REQUIRE(views.size() == 5);  // minJ/maxJ, Q4 and Q6 (element minimum, at nodes); none poor
   std::vector<std::string> names;
   for (int v : views) {
     std::string name;
     gmsh::option::getString("View[" + std::to_string(gmsh::view::getIndex(v)) + "].Name", name);
     names.push_back(name);
   }
-  REQUIRE(names == std::vector<std::string>{"minJ/maxJ", "Q4 min", "Q4", "Q6 min", "Q6"});
+  REQUIRE(names == std::vector<std::string>{"homesh: certified minJ/maxJ",
+                                            "homesh: Q4 Equal volume, element minimum",
+                                            "homesh: Q4 Equal volume, at nodes",
+                                            "homesh: Q6 Smoothness, element minimum",
+                                            "homesh: Q6 Smoothness, at nodes"});
+}
+
+TEST_CASE("poor elements: a view of their own, found by the tags the report gives", "[app]") {
+  const TempDir dir;
+  const std::string in = write_invalid_mesh(dir), out = dir / "poor.msh";
+  const auto r = run_homesh(in + " -m quality:poor=0.5 --keep-invalid " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::smatch worst;
+  REQUIRE(std::regex_search(r.output, worst,
+                            std::regex(R"(worst minJ/maxJ (-?[0-9.]+) at triangle (\d+))")));
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  std::vector<int> views;
+  gmsh::view::getTags(views);
+  const auto data = [](int view) {
+    std::string type;
+    std::vector<std::size_t> tags;
+    std::vector<std::vector<double>> values;
+    double time;
+    int components;
+    gmsh::view::getModelData(view, 0, type, tags, values, time, components);
+    std::map<std::size_t, double> by_tag;
+    for (std::size_t k = 0; k < tags.size(); ++k) by_tag[tags[k]] = values[k][0];
+    return by_tag;
+  };
+  const auto validity = data(views.front());
+  std::map<std::size_t, double> below;
+  for (const auto& [tag, value] : validity)
+    if (value < 0.5) below[tag] = value;
+  REQUIRE(!below.empty());
+  const int poor = views.back();
+  std::string name;
+  gmsh::option::getString("View[" + std::to_string(gmsh::view::getIndex(poor)) + "].Name", name);
+  REQUIRE(name == "homesh: elements of certified minJ/maxJ < 0.5");
+  REQUIRE(data(poor) == below);
+  // The report's worst triangle is a Gmsh element tag: a triangle of the file, holding the worst.
+  const std::size_t tag = std::stoul(worst[2]);
+  int type = 0;
+  std::vector<std::size_t> nodes;
+  gmsh::model::mesh::getElement(tag, type, nodes);
+  REQUIRE(type == gmsh::model::mesh::getElementType("Triangle", 2));
+  REQUIRE(validity.at(tag) == Approx(std::stod(worst[1])).margin(1e-4));
+  for (const auto& [t, value] : validity) REQUIRE(value >= validity.at(tag));
 }
 
 TEST_CASE("an invalid mesh is never written silently", "[app]") {

@@ -7,6 +7,7 @@
 #include "../support/gmsh_session.h"
 #include "../support/temp_dir.h"
 #include "gmsh/read_model.h"
+#include "gmsh/view_style.h"
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
@@ -106,7 +107,7 @@ TEST_CASE("model -> core -> model -> .msh -> model keeps everything, p = 1..6", 
   }
 }
 
-TEST_CASE("write_msh records provenance and a sidecar that adapts every view", "[gmsh]") {
+TEST_CASE("write_msh records provenance and a sidecar of the views' styles", "[gmsh]") {
   test::GmshSession session;
   test::make_plate_with_hole(2);
   const Mesh m = gmsh_adapter::read_model("plate");
@@ -115,14 +116,18 @@ TEST_CASE("write_msh records provenance and a sidecar that adapts every view", "
   Field b{"b", Field::Kind::Element, Eigen::MatrixXd::Zero(1, m.num_triangles())};
   const test::TempDir dir;
   const std::string path = dir / "provenance.msh";
-  gmsh_adapter::write_msh(path, gmsh_adapter::add_views({a, b}, tags), "homesh x -m y");
+  const auto views = gmsh_adapter::add_views({a, b}, tags);
+  gmsh_adapter::write_msh(path, views, "homesh x -m y");
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   REQUIRE(text.find("$HomeshProvenance\nhomesh x -m y\n$EndHomeshProvenance") != std::string::npos);
   REQUIRE(text.find("$MeshFormat\n4.1") == 0);
   std::ifstream opt(path + ".opt");
   std::string options((std::istreambuf_iterator<char>(opt)), std::istreambuf_iterator<char>());
-  REQUIRE(options == gmsh_adapter::sidecar_options(2));
-  REQUIRE(options.find("View[1].AdaptVisualizationGrid = 1;") != std::string::npos);
-  REQUIRE(options.find("View[2]") == std::string::npos);
+  REQUIRE(options == gmsh_adapter::sidecar_options(views));
+  REQUIRE(options.find("homesh_first_view = PostProcessing.NbViews - 2;") != std::string::npos);
+  REQUIRE(options.find("View[homesh_first_view + 1].AdaptVisualizationGrid = 1;") !=
+          std::string::npos);
+  REQUIRE(options.find("View[homesh_first_view + 2]") == std::string::npos);
+  REQUIRE(options.find("View[0]") == std::string::npos);
 }

@@ -50,7 +50,7 @@ def pictures(tmp_path_factory):
     assert "validity: 0 invalid of" in log
     shots = {}
     for name, adapt in (("curved", None), ("straight", 0)):
-        png = gui_shot.render(msh, str(out / f"plate_p4_{name}.png"), view="Q4",
+        png = gui_shot.render(msh, str(out / f"plate_p4_{name}.png"), view="homesh: Q4 Equal volume, at nodes",
                               size=(700, 700), adapt=adapt, scale_bar=False)
         shots[name] = (matplotlib.image.imread(png)[:, :, :3] * 255).round().astype(np.uint8)
     return shots

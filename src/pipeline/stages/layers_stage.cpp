@@ -28,8 +28,8 @@ void run(Context& ctx, const LayerOptions& o) {
   Eigen::VectorXd layer(m.num_triangles());
   for (int e = 0; e < m.num_triangles(); ++e) layer(e) = r.layer[e];
   ctx.fields.clear();
-  ctx.set_field({"radius ratio (Eq 4.17)", Field::Kind::Element, q.transpose()});
-  ctx.set_field({"layer", Field::Kind::Element, layer.transpose()});
+  ctx.set_field({"homesh: radius ratio (Eq 4.17)", Field::Kind::Element, q.transpose()});
+  ctx.set_field({"homesh: boundary layer", Field::Kind::Element, layer.transpose(), false});
 
   std::string walls;
   for (const std::string& w : o.walls) walls += (walls.empty() ? "" : ",") + w;

@@ -1,5 +1,6 @@
 #include "pipeline/stages/quality_stage.h"
 
+#include <fmt/core.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -23,6 +24,21 @@ bool is_measure(const std::string& name) {
   });
 }
 
+// A view of the triangles whose certified minJ/maxJ is below `threshold`
+// (their value on every node), so Gmsh's GUI shows where they are.
+void add_poor_elements(Context& ctx, const MeshValidity& v, double threshold) {
+  const Mesh& m = *ctx.mesh;
+  Field f{fmt::format("homesh: elements of certified minJ/maxJ < {:g}", threshold),
+          Field::Kind::ElementNode,
+          {}};
+  for (int e = 0; e < m.num_triangles(); ++e)
+    if (v.ratio(e) < threshold) f.elements.push_back(e);
+  f.values.resize(m.tri.rows(), static_cast<Eigen::Index>(f.elements.size()));
+  for (std::size_t k = 0; k < f.elements.size(); ++k)
+    f.values.col(static_cast<Eigen::Index>(k)).setConstant(v.ratio(f.elements[k]));
+  ctx.set_field(std::move(f));
+}
+
 void run(Context& ctx, const QualityOptions& o) {
   const Mesh& m = ctx.require_mesh("quality");
   std::vector<const Measure*> chosen;
@@ -37,7 +53,7 @@ void run(Context& ctx, const QualityOptions& o) {
   const auto t1 = std::chrono::steady_clock::now();
   const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   const MeshValidity& v = quality.validity;
-  ctx.set_field({"minJ/maxJ", Field::Kind::Element, v.ratio.transpose()});
+  ctx.set_field({kValidityFieldName, Field::Kind::Element, v.ratio.transpose(), true, true});
   ctx.results = {{"triangles", m.num_triangles()},
                  {"invalid", v.invalid},
                  {"worst", v.worst},
@@ -49,9 +65,12 @@ void run(Context& ctx, const QualityOptions& o) {
     histograms.push_back(histogram_line(name, r.element_min));
     ctx.results[name + "_min"] = r.element_min.minCoeff();
     ctx.results[name + "_mean"] = r.element_min.mean();
-    ctx.set_field({name + " min", Field::Kind::Element, r.element_min.transpose()});
-    ctx.set_field({name, Field::Kind::ElementNode, std::move(r.node_values)});
+    ctx.set_field(
+        {element_field_name(*chosen[j]), Field::Kind::Element, r.element_min.transpose()});
+    ctx.set_field(
+        {node_field_name(*chosen[j]), Field::Kind::ElementNode, std::move(r.node_values)});
   }
+  add_poor_elements(ctx, v, o.poor);
   const auto t2 = std::chrono::steady_clock::now();
   const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
 
@@ -84,6 +103,8 @@ Stage quality_stage() {
       "tolerance", [](O& o) -> double& { return o.bounds.relative_tolerance; }, real(0, 1, "()"),
       "relative tolerance of the certified Jacobian bounds");
   t.add("worst", &O::worst, integer(0, 1000), "number of worst elements to list");
+  t.add("poor", &O::poor, real(-1, 1, "[]"),
+        "elements of certified minJ/maxJ below this get a view of their own");
   t.add("threads", &O::threads, integer(0, 1024),
         "threads for bounds and measures (0 = one per core)");
   return make_stage<O>(

@@ -14,8 +14,9 @@ struct QualityOptions {
   Reference reference = Reference::element_max;              ///< the thesis' normalisation
   int lattice = 0;  ///< sampling lattice order; 0: default_lattice_order(p)
   BoundsOptions bounds;
-  int worst = 5;    ///< worst elements listed
-  int threads = 0;  ///< 0: one per core
+  int worst = 5;      ///< worst elements listed
+  double poor = 0.5;  ///< elements of certified minJ/maxJ below this get a view of their own
+  int threads = 0;    ///< 0: one per core
 };
 
 /// `quality`: certified validity and quality measures as views and a report.
