@@ -29,10 +29,14 @@ def render(vtu, png, field="minJ/maxJ", subdivision=3, centre=None, scale=None,
     if grid.GetNumberOfCells() == 0:
         raise SystemExit(f"{vtu}: VTK read no cells")
     # The triangles only: the boundary lines carry no quality (NaN) and would draw over them.
-    triangles = vtk.vtkExtractCellsByType()
+    # (VTK 9.1's vtkExtractCellsByType would drop the cell data.)
+    ids = vtk.vtkIdList()
+    for c in range(grid.GetNumberOfCells()):
+        if grid.GetCellType(c) in (vtk.VTK_TRIANGLE, vtk.VTK_LAGRANGE_TRIANGLE):
+            ids.InsertNextId(c)
+    triangles = vtk.vtkExtractCells()
     triangles.SetInputConnection(reader.GetOutputPort())
-    for cell_type in (vtk.VTK_TRIANGLE, vtk.VTK_LAGRANGE_TRIANGLE):
-        triangles.AddCellType(cell_type)
+    triangles.SetCellList(ids)
     surface = vtk.vtkDataSetSurfaceFilter()
     surface.SetInputConnection(triangles.GetOutputPort())
     surface.SetNonlinearSubdivisionLevel(subdivision)

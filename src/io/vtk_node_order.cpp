@@ -1,6 +1,7 @@
 #include "io/vtk_node_order.h"
 
-#include <cmath>
+#include <algorithm>
+#include <numeric>
 #include <string>
 
 #include "core/error.h"
@@ -63,17 +64,13 @@ std::vector<int> gmsh_to_vtk_triangle(int p) {
   return map;
 }
 
-std::vector<int> gmsh_to_vtk_line(int p) {
-  check_order(p, "gmsh_to_vtk_line");
-  // VTK (vtkLagrangeCurve): r = 0, r = 1, then r = i / p for i = 1 .. p-1.
-  std::vector<int> vtk = {0, p};
-  for (int i = 1; i < p; ++i) vtk.push_back(i);
-  const Eigen::RowVectorXd gmsh = reference_line_nodes(p) * p;
-  std::vector<int> map(vtk.size(), -1);
-  for (std::size_t k = 0; k < vtk.size(); ++k)
-    for (int g = 0; g <= p; ++g)
-      if (static_cast<int>(std::lround(gmsh(g))) == vtk[k]) map[k] = g;
-  return map;
+std::vector<int> line_nodes_along(int p) {
+  check_order(p, "line_nodes_along");
+  const Eigen::RowVectorXd t = reference_line_nodes(p);
+  std::vector<int> along(static_cast<std::size_t>(p + 1));
+  std::iota(along.begin(), along.end(), 0);
+  std::sort(along.begin(), along.end(), [&](int a, int b) { return t(a) < t(b); });
+  return along;
 }
 
 }  // namespace homesh

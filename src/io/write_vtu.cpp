@@ -14,8 +14,7 @@
 namespace homesh {
 namespace {
 
-constexpr std::uint8_t kVtkLine = 3, kVtkTriangle = 5, kVtkLagrangeCurve = 68,
-                       kVtkLagrangeTriangle = 69;
+constexpr std::uint8_t kVtkLine = 3, kVtkPolyLine = 4, kVtkTriangle = 5, kVtkLagrangeTriangle = 69;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Appends `value`'s bytes to `bytes`, least significant first.
@@ -121,7 +120,7 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
                 std::to_string(mesh.num_lines()) + " lines");
   const int p = mesh.order;
   const int triangles = mesh.num_triangles(), lines = mesh.num_lines();
-  const std::vector<int> tri_map = gmsh_to_vtk_triangle(p), line_map = gmsh_to_vtk_line(p);
+  const std::vector<int> tri_map = gmsh_to_vtk_triangle(p), line_map = line_nodes_along(p);
 
   std::string points, connectivity, offsets, types;
   for (int i = 0; i < mesh.num_nodes(); ++i) {
@@ -138,7 +137,7 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
   for (int l = 0; l < lines; ++l) {
     for (int g : line_map) put<std::int64_t>(connectivity, mesh.line(g, l));
     put(offsets, end += static_cast<std::int64_t>(line_map.size()));
-    put(types, p == 1 ? kVtkLine : kVtkLagrangeCurve);
+    put(types, p == 1 ? kVtkLine : kVtkPolyLine);
   }
 
   std::string element, geometrical, physical;

@@ -1,10 +1,12 @@
 #pragma once
 // `.vtu` output: the mesh and its fields as a VTK XML UnstructuredGrid, for
 // ParaView and every VTK-based tool. Curved elements stay curved: triangles
-// of order p >= 2 are VTK_LAGRANGE_TRIANGLE (69) cells and boundary lines
-// VTK_LAGRANGE_CURVE (68), nodes in VTK's order (io/vtk_node_order.h); order
-// 1 writes VTK_TRIANGLE (5) and VTK_LINE (3). ParaView draws them curved with
-// its "Nonlinear Subdivision Level" (2 or more).
+// of order p >= 2 are VTK_LAGRANGE_TRIANGLE (69) cells, nodes in VTK's order
+// (io/vtk_node_order.h), which ParaView draws curved with its "Nonlinear
+// Subdivision Level" (2 or more). Boundary lines are VTK_POLY_LINE (4) cells
+// through their nodes in order, since VTK 9.1 and ParaView 5.11 crash on
+// nonlinear 1D cells at those levels. Order 1 writes VTK_TRIANGLE (5) and
+// VTK_LINE (3).
 //
 // Layout (VTK XML 1.0, appended nowhere: every array inline, base64 of
 // little-endian bytes after a UInt64 byte count, so values round-trip exactly

@@ -101,25 +101,20 @@ TEST_CASE("gmsh_to_vtk_triangle is a permutation placing each Gmsh node at its V
   }
 }
 
-TEST_CASE("gmsh_to_vtk_line is a permutation placing each Gmsh node at its VTK position",
-          "[io][vtk_node_order]") {
-  const auto rows = vtk_nodes();
+TEST_CASE("line_nodes_along runs from a line's first end to its second", "[io][vtk_node_order]") {
   for (int p = 1; p <= kMaxOrder; ++p) {
     INFO("p = " << p);
-    const std::vector<int> map = gmsh_to_vtk_line(p);
-    REQUIRE(static_cast<int>(map.size()) == p + 1);
-    std::vector<int> sorted = map, all(static_cast<std::size_t>(p + 1));
-    std::sort(sorted.begin(), sorted.end());
-    std::iota(all.begin(), all.end(), 0);
-    CHECK(sorted == all);
-    const Eigen::RowVectorXd gmsh = reference_line_nodes(p);
-    const std::vector<double>& vtk = rows.at({"Curve", p});
-    REQUIRE(vtk.size() == map.size());
-    for (std::size_t k = 0; k < map.size(); ++k) CHECK(std::abs(gmsh(map[k]) - vtk[k]) < 1e-15);
+    const std::vector<int> along = line_nodes_along(p);
+    REQUIRE(static_cast<int>(along.size()) == p + 1);
+    CHECK(along.front() == 0);
+    CHECK(along.back() == 1);
+    // Reference positions k / p, k = 0..p, in order: every node once.
+    const Eigen::RowVectorXd t = reference_line_nodes(p);
+    for (int k = 0; k <= p; ++k) CHECK(std::lround(t(along[static_cast<std::size_t>(k)]) * p) == k);
   }
 }
 
 TEST_CASE("VTK node orders refuse an order below 1", "[io][vtk_node_order]") {
   CHECK_THROWS_AS(vtk_triangle_node_indices(0), Error);
-  CHECK_THROWS_AS(gmsh_to_vtk_line(0), Error);
+  CHECK_THROWS_AS(line_nodes_along(0), Error);
 }
