@@ -9,23 +9,27 @@
 
 #include "core/error.h"
 #include "gmsh/gmsh_call.h"
+#include "gmsh/option_scope.h"
 
 namespace homesh::gmsh_adapter {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The data of view `tag`'s first step, or false for a view without model data.
+// The data of view `tag`'s first step, or false for a view without model data
+// (list-based), which Gmsh is kept from reporting as an error: it is skipped.
 bool model_data(int tag, std::string& type, std::vector<std::size_t>& tags,
                 std::vector<std::vector<double>>& data, int& components) {
+  OptionScope quiet;
+  quiet.set("General.Verbosity", 0);
   try {
     double time = 0;
     gmsh_call("view " + std::to_string(tag),
               [&] { gmsh::view::getModelData(tag, 0, type, tags, data, time, components); });
   } catch (const Error&) {
-    return false;  // list-based: Gmsh has no model data for it
+    return false;
   }
-  return true;
+  return !type.empty();
 }
 
 }  // namespace

@@ -212,3 +212,24 @@ def test_an_invalid_mesh_is_written_to_vtu_only_when_asked(model, tmp_path):
     assert list(tmp_path.iterdir()) == []
     homesh.write(str(out), keep_invalid=True)
     assert np.nanmin(cell_array(read_vtu(out), "minJ/maxJ")) < 0
+
+
+def test_a_users_node_view_is_point_data_and_a_list_view_is_left_out(model, tmp_path, capfd):
+    homesh.mesh(factor=4)
+    homesh.curve(p=3)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    view = gmsh.view.add("x + 2y")
+    xyz = coords.reshape(-1, 3)
+    gmsh.view.addModelData(view, 0, "", "NodeData", tags, [[x + 2 * y] for x, y, _ in xyz])
+    gmsh.view.addListData(gmsh.view.add("a .pos view"), "SP", 1, [0.1, 0.2, 0.0, 5.0])
+    gmsh.option.setNumber("General.Terminal", 1)
+    out = tmp_path / "views.vtu"
+    homesh.write(str(out))
+    printed = capfd.readouterr()
+    assert "Error" not in printed.out + printed.err  # Gmsh's, for the list view's missing model data
+    grid = read_vtu(out)
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    values = vtk_to_numpy(grid.GetPointData().GetArray("x + 2y"))
+    assert np.allclose(values, points[:, 0] + 2 * points[:, 1], rtol=0, atol=1e-15)
+    assert grid.GetCellData().GetArray("a .pos view") is None
+    assert grid.GetPointData().GetArray("a .pos view") is None
