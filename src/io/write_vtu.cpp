@@ -1,11 +1,11 @@
 #include "io/write_vtu.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <map>
-#include <utility>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
