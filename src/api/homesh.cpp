@@ -2,16 +2,22 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
+
 #include "core/progress.h"
 #include "gmsh/gmsh_call.h"
+#include "gmsh/line_tags.h"
 #include "gmsh/option_scope.h"
 #include "gmsh/read_model.h"
+#include "gmsh/read_views.h"
 #include "gmsh/view_style.h"
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
+#include "io/write_vtu.h"
 #include "pipeline/context.h"
 #include "pipeline/group_context_by_entity.h"
+#include "pipeline/output_format.h"
 #include "pipeline/quality_report.h"
 #include "pipeline/stage_registry.h"
 #include "quality/mesh_validity.h"
@@ -38,13 +44,16 @@ void configure_log(Log& log) {
 
 // The mesh's validity, its worst triangle named by the Gmsh tag homesh
 // writes it with (Mesh::triangle_tag), or by `tags` when read from a model.
-Validity summary(const Mesh& m, const std::vector<std::size_t>& tags = {}) {
-  const MeshValidity v = mesh_validity(m);
+Validity summary(const Mesh& m, const MeshValidity& v, const std::vector<std::size_t>& tags = {}) {
   const std::size_t worst = v.worst_element < 0 ? 0
                             : tags.empty()      ? m.triangle_tag(v.worst_element)
                                                 : tags[static_cast<std::size_t>(v.worst_element)];
   return {m.num_triangles(), v.invalid, v.worst, static_cast<int>(worst),
           validity_line(m, v, worst)};
+}
+
+Validity summary(const Mesh& m, const std::vector<std::size_t>& tags = {}) {
+  return summary(m, mesh_validity(m), tags);
 }
 
 // Runs `body`, Gmsh's own std::string throws turned into homesh::Error as the
@@ -127,16 +136,26 @@ Validity validity() {
 
 void write(const std::string& path, const std::string& provenance, bool keep_invalid) {
   guarded([&] {
-    gmsh_adapter::check_msh_path(path);
+    const OutputFormat format = check_output_path(path);
     // Every output carries its certified validity; an invalid mesh is never written silently.
     const std::string source = "the current Gmsh model";
     if (!gmsh_adapter::model_has_mesh()) throw Error(source + ": has no triangles (no 2D mesh)");
     std::vector<std::size_t> tags;
     const Mesh m = gmsh_adapter::read_model(source, &tags);
-    const Validity v = summary(m, tags);
+    const MeshValidity certified = mesh_validity(m);
+    const Validity v = summary(m, certified, tags);
     if (v.invalid > 0 && !keep_invalid)
       throw Error(path + ": not written: " + std::to_string(v.invalid) +
                   " triangles are not certified valid (keep them with keep_invalid)");
+    if (format == OutputFormat::vtu) {
+      // The views become the .vtu's fields; the certified minJ/maxJ is always one of them.
+      std::vector<Field> fields = gmsh_adapter::read_views(m, tags);
+      if (std::none_of(fields.begin(), fields.end(),
+                       [](const Field& f) { return f.name == "minJ/maxJ"; }))
+        fields.push_back({"minJ/maxJ", Field::Kind::Element, certified.ratio.transpose()});
+      write_vtu(path, m, fields, provenance + "\n" + v.line, {tags, gmsh_adapter::line_tags(m)});
+      return;
+    }
     std::vector<int> views;
     gmsh::view::getTags(views);
     gmsh_adapter::write_msh(path, views, provenance + "\n" + v.line);

@@ -100,11 +100,14 @@ Result voronoi(const StageOptions& options = {});
 Validity validity();
 
 /// Certifies the current model's mesh, then writes it and all its views to
-/// `path` (a `.msh`, in the MSH version and encoding set in Gmsh's options,
-/// atomically, every write checked) with the `.opt` sidecar that displays
-/// curved fields curved; `provenance` (e.g. the program's command line) and
-/// the validity line are recorded in the file. Throws homesh::Error and
-/// writes nothing if a triangle is not certified valid, unless `keep_invalid`.
+/// `path`, atomically, every write checked, in the format its extension names:
+/// a `.msh` (in the MSH version and encoding set in Gmsh's options) with the
+/// `.opt` sidecar that displays curved fields curved, or a `.vtu` (VTK XML,
+/// Lagrange cells of the mesh's order, the views as cell and point data and
+/// the certified minJ/maxJ always among them, for ParaView). `provenance`
+/// (e.g. the program's command line) and the validity line are recorded in
+/// the file. Throws homesh::Error and writes nothing if a triangle is not
+/// certified valid, unless `keep_invalid`, or if `path` has another extension.
 void write(const std::string& path, const std::string& provenance = "homesh C++ API",
            bool keep_invalid = false);
 

@@ -1,4 +1,4 @@
-// homesh command line: homesh INPUT [-m STAGE[:key=value...]]... [OUTPUT]
+// homesh command line: homesh INPUT [-m STAGE[:key=value...]]... [OUTPUT.msh | OUTPUT.vtu]
 #include <fmt/core.h>
 #include <gmsh.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "gmsh/write_msh.h"
+#include "pipeline/output_format.h"
 #include "pipeline/run_pipeline.h"
 #include "pipeline/stage_registry.h"
 #include "quality/measure_registry.h"
@@ -47,7 +47,10 @@ int run(int argc, char** argv) {
   bool list = false, list_measures = false, quiet = false, verbose = false, keep_invalid = false,
        trust_geo = false, version = false;
   app.add_option("INPUT", input, "the geometry or mesh: .geo .step .stp .brep .iges .igs .msh");
-  app.add_option("OUTPUT", output, "the .msh to write (none: nothing is written)");
+  std::string formats = "the file to write, by its extension (none: nothing is written):";
+  for (const auto& f : homesh::output_formats())
+    formats += "\n  ." + f.extension + ": " + f.summary;
+  app.add_option("OUTPUT", output, formats);
   app.add_option("-m,--module", modules, "stage to run, as name:key=value:... (repeatable)")
       ->allow_extra_args(false);
   auto* help =
@@ -113,7 +116,7 @@ int run(int argc, char** argv) {
   // reads them again into the plan): a typo costs no time on a large input.
   for (const auto& c : calls) homesh::stage(c.name).parse(c.given);
   // The output is checked before any work: a bad path costs no minutes of meshing.
-  if (!output.empty()) homesh::gmsh_adapter::check_msh_path(output);
+  if (!output.empty()) homesh::check_output_path(output);
 
   // Gmsh reads -setnumber/-setstring from its own command line, before any file.
   std::vector<std::string> gmsh_args = {"homesh"};
@@ -133,8 +136,8 @@ int run(int argc, char** argv) {
   ctx.keep_invalid = keep_invalid;
   ctx.trust_geo = trust_geo;
   if (output.empty())
-    ctx.log.info("no OUTPUT given: the result will not be written (homesh {} ... OUTPUT.msh)",
-                 input);
+    ctx.log.info("no OUTPUT given: the result will not be written (homesh {} ... {})", input,
+                 homesh::output_formats_usage());
   homesh::load_input(input, ctx);
   homesh::run_stages(calls, ctx);
   if (!output.empty())

@@ -23,7 +23,9 @@
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
+#include "io/write_vtu.h"
 #include "pipeline/group_context_by_entity.h"
+#include "pipeline/output_format.h"
 #include "pipeline/quality_report.h"
 #include "pipeline/stage_registry.h"
 #include "quality/mesh_validity.h"
@@ -154,7 +156,7 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
 
 void write_output(const std::string& path, const std::string& provenance, Context& ctx) {
   const Mesh& m = ctx.require_mesh("output");
-  gmsh_adapter::check_msh_path(path);
+  const OutputFormat format = check_output_path(path);
   // Every output carries its certified validity; an invalid mesh is never written silently.
   const MeshValidity v = mesh_validity(m);
   if (std::none_of(ctx.fields.begin(), ctx.fields.end(),
@@ -167,13 +169,20 @@ void write_output(const std::string& path, const std::string& provenance, Contex
                 " triangles are not certified valid (keep them with --keep-invalid)");
   if (v.invalid > 0) ctx.log.warn("{}: writing {} invalid triangles as asked", path, v.invalid);
 
+  std::string record = provenance;
+  for (const std::string& note : ctx.notes) record += "\n" + note;
+  if (format == OutputFormat::vtu) {
+    write_vtu(path, m, ctx.fields, record);
+    ctx.log.info("wrote {} (order {}, {} triangles, {} fields)", path, m.order, m.num_triangles(),
+                 ctx.fields.size());
+    return;
+  }
+
   std::vector<int> views;
   gmsh_adapter::gmsh_call("writing " + path, [&] {
     const auto tags = gmsh_adapter::write_model(m);
     views = gmsh_adapter::add_views(ctx.fields, tags);
   });
-  std::string record = provenance;
-  for (const std::string& note : ctx.notes) record += "\n" + note;
   gmsh_adapter::write_msh(path, views, record);
   ctx.log.info("wrote {} (order {}, {} triangles, {} views)", path, m.order, m.num_triangles(),
                views.size());

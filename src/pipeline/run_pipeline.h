@@ -1,6 +1,6 @@
 #pragma once
 // The CLI's work: load the input through Gmsh, run each stage in turn, write
-// the output `.msh` (with its views and the command line that made it).
+// the output `.msh` or `.vtu` (with its fields and the command line that made it).
 #include <string>
 #include <vector>
 
@@ -25,8 +25,10 @@ void load_input(const std::string& path, Context& ctx);
 void run_stages(const std::vector<StageCall>& calls, Context& ctx);
 
 /// Certifies the validity of ctx's mesh, then writes it and ctx's fields (plus
-/// a minJ/maxJ view if no stage made one) into the current model and to `path`
-/// (MSH 4.1, plus `path.opt`), recording `provenance` in the file. Throws
+/// a minJ/maxJ field if no stage made one) to `path`, in the format its
+/// extension names (pipeline/output_format.h): a `.msh` through the current
+/// model (MSH 4.1, one view per field, plus `path.opt`), a `.vtu` directly
+/// (io/write_vtu.h); `provenance` is recorded in the file. Throws
 /// homesh::Error and writes nothing if a triangle is not certified valid,
 /// unless ctx.keep_invalid.
 void write_output(const std::string& path, const std::string& provenance, Context& ctx);

@@ -5,7 +5,7 @@
 //
 //   gmsh.initialize(); gmsh.open("geo/naca.geo"); gmsh.model.mesh.generate(2)
 //   homesh.order(p=4)          # any stage, options as keyword arguments
-//   homesh.write("out.msh")    # mesh + views + .opt sidecar, atomically
+//   homesh.write("out.msh")    # mesh + views + .opt sidecar, atomically (or "out.vtu")
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -94,10 +94,11 @@ PYBIND11_MODULE(homesh, m) {
         "written file shows them (certified minJ/maxJ shown on [0, 1], drawn curved, the others "
         "hidden): gmsh.fltk.run() afterwards shows the same.");
   m.def("write", &write_file, py::arg("path"), py::arg("keep_invalid") = false,
-        "Certify the current model's mesh, then write it and its views to a .msh file (the MSH "
-        "version and encoding of Gmsh's options, atomically) with its .opt sidecar, which styles "
-        "the views as they are in this process; refuses a mesh not certified valid unless "
-        "keep_invalid.");
+        "Certify the current model's mesh, then write it and its views atomically to a .msh file "
+        "(the MSH version and encoding of Gmsh's options) with its .opt sidecar, which styles "
+        "the views as they are in this process, or to a .vtu file (VTK XML with Lagrange cells, "
+        "the views and the certified minJ/maxJ as cell and point data, for ParaView), as the "
+        "path's extension says; refuses a mesh not certified valid unless keep_invalid.");
   m.def("set_quiet", &api::set_quiet, py::arg("quiet") = true,
         "Silence homesh's reports and progress (warnings stay).");
   m.def(

@@ -86,7 +86,8 @@ TEST_CASE("The output path is checked before any work", "[app][robustness]") {
                Catch::Contains("No such file or directory") && !Catch::Contains("nosuch.geo"));
   fs::create_directory(dir / "folder.msh");
   require_error(run_homesh(dir / "nosuch.geo " + dir / "folder.msh"), "is a folder");
-  require_error(run_homesh(dir / "nosuch.geo " + dir / "out.vtk"), "homesh writes .msh files only");
+  require_error(run_homesh(dir / "nosuch.geo " + dir / "out.vtk"),
+                "out.vtk: unknown output format '.vtk' (homesh writes .msh or .vtu)");
   // So are the stages' options, before the input is read.
   r = run_homesh(dir / "nosuch.geo -m curve:p=3,nu=0.3");
   require_error(r, "stage 'curve': option p=3,nu=0.3: not an integer");

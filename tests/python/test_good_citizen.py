@@ -1,7 +1,7 @@
 """homesh in a user's Gmsh script: its messages reach Python (logging,
 redirected stdout) and follow General.Verbosity; writing keeps the user's Gmsh
-options and honours their MSH version and encoding; only .msh is written, and
-never an invalid mesh unless asked."""
+options and honours their MSH version and encoding; only .msh and .vtu are
+written, and never an invalid mesh unless asked."""
 import contextlib
 import io
 import logging
@@ -86,7 +86,8 @@ def test_write_honours_and_restores_the_users_options(plate, tmp_path, version, 
 
 
 def test_other_extensions_are_refused_with_the_clis_message(plate, tmp_path):
-    with pytest.raises(homesh.Error, match="homesh writes .msh files only"):
+    with pytest.raises(homesh.Error,
+                       match=r"x\.vtk: unknown output format '\.vtk' \(homesh writes \.msh or \.vtu\)"):
         homesh.write(str(tmp_path / "x.vtk"))
     assert list(tmp_path.iterdir()) == []
 

@@ -1,0 +1,37 @@
+#pragma once
+// VTK's node order of its Lagrange triangle (VTK_LAGRANGE_TRIANGLE = 69) and
+// the map from Gmsh's order, which homesh's Mesh uses
+// (element/reference_nodes.h), to VTK's; the order of a line's nodes along it.
+//
+// VTK orders a triangle of order p by its barycentric index
+// (vtkHigherOrderTriangle::BarycentricIndex, VTK 9.1): the 3 corners, the p-1
+// nodes of edges 0-1, 1-2, 2-0 (each from its first corner to its second),
+// then the interior nodes recursively as a triangle of order p-3. Node k has
+// parametric coordinates (r, s) = (b0, b1) / p of its barycentric index
+// (b0, b1, b2), corners (0,0), (1,0), (0,1). That happens to be Gmsh's order:
+// the map below is derived from the two definitions and is the identity for
+// every order, as tests/io/vtk_node_order_test.cpp (against VTK's own
+// parametric coordinates) and tests/python/test_vtu.py check.
+//
+// Lines are written as VTK_POLY_LINE cells through their nodes in order along
+// the line, not as VTK_LAGRANGE_CURVE: VTK 9.1's vtkDataSetSurfaceFilter, and
+// so ParaView 5.11, crash (SIGSEGV) on any nonlinear 1D cell (Lagrange curve,
+// even VTK_QUADRATIC_EDGE) at a Nonlinear Subdivision Level of 2 or more.
+#include <Eigen/Core>
+#include <vector>
+
+namespace homesh {
+
+/// 2 by (p+1)(p+2)/2 integer coordinates (i, j) = p (r, s) of VTK's Lagrange
+/// triangle nodes of order p >= 1, VTK order. Throws homesh::Error if p < 1.
+Eigen::Matrix2Xi vtk_triangle_node_indices(int p);
+
+/// (p+1)(p+2)/2 Gmsh node numbers of a triangle of order p >= 1 in VTK order:
+/// VTK node k is Gmsh node map[k] (the node at the same reference position).
+std::vector<int> gmsh_to_vtk_triangle(int p);
+
+/// p+1 Gmsh node numbers of a line of order p >= 1 in order along it, from
+/// its first end to its second (the points of a VTK_POLY_LINE).
+std::vector<int> line_nodes_along(int p);
+
+}  // namespace homesh
