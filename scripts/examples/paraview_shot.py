@@ -20,7 +20,7 @@ import argparse
 from paraview import simple
 
 
-def render(vtu, png, field="minJ/maxJ", subdivision=3, centre=None, scale=None,
+def render(vtu, png, field="homesh: certified minJ/maxJ", subdivision=3, centre=None, scale=None,
            size=(600, 600), edges=False, low=0.0):
     reader = simple.OpenDataFile(vtu)
     view = simple.GetActiveViewOrCreate("RenderView")
@@ -57,7 +57,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("vtu")
     parser.add_argument("png")
-    parser.add_argument("--field", default="minJ/maxJ", help="cell or point field to colour by")
+    parser.add_argument("--field", default="homesh: certified minJ/maxJ",
+                        help="cell or point field to colour by")
     parser.add_argument("--subdivision", type=int, default=3,
                         help="Nonlinear Subdivision Level (0: straight cells)")
     parser.add_argument("--centre", type=float, nargs=2, metavar=("X", "Y"))

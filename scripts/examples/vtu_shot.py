@@ -5,8 +5,8 @@ ParaView tessellates curved (Lagrange) cells with vtkDataSetSurfaceFilter, whose
 nonlinear subdivision level is ParaView's "Nonlinear Subdivision Level"
 (Properties, advanced): 0 draws each cell straight through its corners, each
 level halves the straight pieces. This script runs the same filter on the
-triangles of the .vtu, colours them by a field (a cell field such as minJ/maxJ,
-or a point field such as Q4) over [0, 1] on a white background, and prints the
+triangles of the .vtu, colours them by a field (a cell field such as "homesh: certified minJ/maxJ",
+or a point field such as "homesh: Q4 Equal volume, at nodes, smallest at the point") over [0, 1] on a white background, and prints the
 picture with a parallel camera. It needs a display: run it under `xvfb-run -a`
 on a machine without one.
 
@@ -20,7 +20,7 @@ import argparse
 import vtk
 
 
-def render(vtu, png, field="minJ/maxJ", subdivision=3, centre=None, scale=None,
+def render(vtu, png, field="homesh: certified minJ/maxJ", subdivision=3, centre=None, scale=None,
            size=(600, 600)):
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(vtu)
@@ -90,7 +90,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("vtu")
     parser.add_argument("png")
-    parser.add_argument("--field", default="minJ/maxJ", help="cell or point field to colour by")
+    parser.add_argument("--field", default="homesh: certified minJ/maxJ",
+                        help="cell or point field to colour by")
     parser.add_argument("--subdivision", type=int, default=3,
                         help="nonlinear subdivision level (ParaView's; 0: straight cells)")
     parser.add_argument("--centre", type=float, nargs=2, metavar=("X", "Y"))

@@ -151,8 +151,8 @@ void write(const std::string& path, const std::string& provenance, bool keep_inv
       // The views become the .vtu's fields; the certified minJ/maxJ is always one of them.
       std::vector<Field> fields = gmsh_adapter::read_views(m, tags);
       if (std::none_of(fields.begin(), fields.end(),
-                       [](const Field& f) { return f.name == "minJ/maxJ"; }))
-        fields.push_back({"minJ/maxJ", Field::Kind::Element, certified.ratio.transpose()});
+                       [](const Field& f) { return f.name == kValidityFieldName; }))
+        fields.push_back({kValidityFieldName, Field::Kind::Element, certified.ratio.transpose()});
       write_vtu(path, m, fields, provenance + "\n" + v.line, {tags, gmsh_adapter::line_tags(m)});
       return;
     }

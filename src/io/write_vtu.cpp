@@ -84,13 +84,28 @@ std::string data_array(const std::string& type, const std::string& name, int com
          base64(block) + "</DataArray>\n";
 }
 
-void check_field(const Field& f, const Mesh& m) {
+// The field's values over every triangle: a field of a few elements
+// (Field::elements) gets NaN on the others.
+Eigen::MatrixXd all_triangles(const Field& f, const Mesh& m) {
   const Eigen::Index rows = f.kind == Field::Kind::Element ? 1 : triangle_node_count(m.order);
-  if (f.values.rows() != rows || f.values.cols() != m.num_triangles())
+  const Eigen::Index cols =
+      f.elements.empty() ? m.num_triangles() : static_cast<Eigen::Index>(f.elements.size());
+  if (f.values.rows() != rows || f.values.cols() != cols)
     throw Error("vtu: field '" + f.name + "' is " + std::to_string(f.values.rows()) + " by " +
                 std::to_string(f.values.cols()) + ", but the mesh has " +
-                std::to_string(m.num_triangles()) + " triangles of " + std::to_string(rows) +
-                (rows == 1 ? " value" : " nodes") + " each");
+                std::to_string(f.elements.empty() ? m.num_triangles() : f.elements.size()) +
+                (f.elements.empty() ? " triangles" : " listed triangles") + " of " +
+                std::to_string(rows) + (rows == 1 ? " value" : " nodes") + " each");
+  if (f.elements.empty()) return f.values;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(rows, m.num_triangles(), kNaN);
+  for (std::size_t k = 0; k < f.elements.size(); ++k) {
+    const int e = f.elements[k];
+    if (e < 0 || e >= m.num_triangles())
+      throw Error("vtu: field '" + f.name + "' lists triangle " + std::to_string(e) + " of " +
+                  std::to_string(m.num_triangles()));
+    out.col(e) = f.values.col(static_cast<Eigen::Index>(k));
+  }
+  return out;
 }
 
 // The smallest physical group tag of dimension `dim` holding each entity of that dimension.
@@ -110,7 +125,14 @@ std::map<int, int> physical_of(const Mesh& m, int dim) {
 
 std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
                      const std::string& provenance, const ElementTags& tags) {
-  for (const Field& f : fields) check_field(f, mesh);
+  // A field of no element (no poor triangles, say) is left out, as in the .msh.
+  std::vector<const Field*> written;
+  std::vector<Eigen::MatrixXd> values_of;
+  for (const Field& f : fields)
+    if (f.values.cols() > 0 || mesh.num_triangles() == 0) {
+      written.push_back(&f);
+      values_of.push_back(all_triangles(f, mesh));
+    }
   if (!tags.triangles.empty() &&
       tags.triangles.size() != static_cast<std::size_t>(mesh.num_triangles()))
     throw Error("vtu: " + std::to_string(tags.triangles.size()) + " triangle tags for " +
@@ -166,25 +188,26 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
                           data_array("Int32", "gmsh:geometrical", 1, geometrical) +
                           data_array("Int32", "gmsh:physical", 1, physical);
   std::string point_data;
-  for (const Field& f : fields) {
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    const Field& f = *written[i];
+    const Eigen::MatrixXd& v = values_of[i];
     std::string values;
-    const auto components = static_cast<int>(f.values.rows());
+    const auto components = static_cast<int>(v.rows());
     const std::vector<int> order = f.kind == Field::Kind::Element ? std::vector<int>{0} : tri_map;
     for (int e = 0; e < triangles; ++e)
-      for (int k : order) put(values, f.values(k, e));
+      for (int k : order) put(values, v(k, e));
     for (int l = 0; l < lines * components; ++l) put(values, kNaN);
-    const std::string name = f.kind == Field::Kind::Element ? f.name : f.name + " at nodes";
-    cell_data += data_array("Float64", name, components, values);
+    cell_data += data_array("Float64", f.name, components, values);
     if (f.kind == Field::Kind::ElementNode) {
       std::vector<double> at_point(static_cast<std::size_t>(mesh.num_nodes()), kNaN);
       for (int e = 0; e < triangles; ++e)
         for (int k = 0; k < components; ++k) {
-          double& v = at_point[static_cast<std::size_t>(mesh.tri(k, e))];
-          v = std::fmin(v, f.values(k, e));
+          double& x = at_point[static_cast<std::size_t>(mesh.tri(k, e))];
+          x = std::fmin(x, v(k, e));
         }
       std::string bytes;
-      for (double v : at_point) put(bytes, v);
-      point_data += data_array("Float64", f.name, 1, bytes);
+      for (double x : at_point) put(bytes, x);
+      point_data += data_array("Float64", point_field_name(f.name), 1, bytes);
     }
   }
 

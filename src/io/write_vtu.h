@@ -21,15 +21,20 @@
 //   - "gmsh:physical": the tag of a physical group of the cell's dimension
 //     holding that entity (the smallest, if several do), 0 if none (the
 //     names meshio gives these fields, so a conversion keeps them);
-//   - every Element field (the certified minJ/maxJ, "Q4 min", ...), NaN on lines;
-//   - every ElementNode field F as "F at nodes": one component per node of
-//     the triangle, in VTK's node order: the exact, per-element values.
-// - PointData: every ElementNode field F as "F": at each point, the smallest
-//   value over the triangles sharing it (NaN at a point of no triangle).
-//   Such fields (the quality measures at the nodes) are per element and jump
-//   across element edges; VTK's point data is one value per point, so the
-//   point field shows the worst element at each node, drawn curved and
-//   continuous, while "F at nodes" keeps every element's own values.
+//   - every Element field, named as its Gmsh view ("homesh: certified
+//     minJ/maxJ", "homesh: Q4 Equal volume, element minimum", ...), NaN on
+//     lines;
+//   - every ElementNode field F under its name ("homesh: Q4 Equal volume, at
+//     nodes"): one component per node of the triangle, in VTK's node order:
+//     the exact, per-element values;
+//   - a field of a few elements (Field::elements) is NaN on the others; a
+//     field of no element is left out (Gmsh's views, too).
+// - PointData: every ElementNode field F as point_field_name(F): at each
+//   point, the smallest value over the triangles sharing it (NaN at a point
+//   of no triangle). Such fields (the quality measures at the nodes) are per
+//   element and jump across element edges; VTK's point data is one value per
+//   point, so the point field shows the worst element at each node, drawn
+//   curved and continuous, while the cell field keeps every element's own.
 #include <string>
 #include <vector>
 
@@ -37,6 +42,11 @@
 #include "core/mesh.h"
 
 namespace homesh {
+
+/// The point-data name of ElementNode field `field`: "<field>, smallest at the point".
+inline std::string point_field_name(const std::string& field) {
+  return field + ", smallest at the point";
+}
 
 /// The Gmsh element tags of a mesh's triangles and lines, for "gmsh:element"
 /// when the mesh was read from a model that numbers them its own way. Empty:

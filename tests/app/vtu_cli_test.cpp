@@ -43,7 +43,7 @@ TEST_CASE("the CLI writes a .vtu with Lagrange cells and the certified minJ/maxJ
   CHECK_THAT(vtu, Catch::StartsWith("<?xml version=\"1.0\"?>\n<!--\nhomesh "));
   CHECK_THAT(vtu, Catch::Contains("-m curve:p=3 " + out + "\n-->"));
   CHECK_THAT(vtu, Catch::Contains("NumberOfCells=\"64\""));  // 44 triangles and 20 lines
-  CHECK_THAT(vtu, Catch::Contains("Name=\"minJ/maxJ\" NumberOfComponents=\"1\""));
+  CHECK_THAT(vtu, Catch::Contains("Name=\"homesh: certified minJ/maxJ\" NumberOfComponents=\"1\""));
   CHECK_FALSE(std::ifstream(out + ".opt").good());
 }
 

@@ -125,8 +125,8 @@ TEST_CASE(
     "at each point as point data",
     "[io][write_vtu]") {
   const std::string vtu = vtu_text(square(2), fields(), "");
-  CHECK_THAT(vtu, Catch::Contains("Name=\"Q4 at nodes\" NumberOfComponents=\"6\""));
-  const auto at_nodes = array<double>(vtu, "Q4 at nodes");
+  CHECK_THAT(vtu, Catch::Contains("Name=\"Q4\" NumberOfComponents=\"6\""));
+  const auto at_nodes = array<double>(vtu, "Q4");
   REQUIRE(at_nodes.size() == 36);
   for (int k = 0; k < 6; ++k) {
     CHECK(at_nodes[static_cast<std::size_t>(k)] == k + 1);
@@ -134,7 +134,22 @@ TEST_CASE(
   }
   for (std::size_t k = 12; k < 36; ++k) CHECK(std::isnan(at_nodes[k]));
   // Nodes 0, 2 and 6 (the diagonal) are shared: the smaller of the two triangles' values.
-  CHECK(array<double>(vtu, "Q4") == std::vector<double>{1, 2, 3, 12, 4, 5, 6, 14, 15});
+  CHECK(array<double>(vtu, "Q4, smallest at the point") ==
+        std::vector<double>{1, 2, 3, 12, 4, 5, 6, 14, 15});
+}
+
+TEST_CASE("vtu_text writes a field of a few elements with NaN on the others", "[io][write_vtu]") {
+  Field poor{"poor", Field::Kind::ElementNode, Eigen::MatrixXd::Constant(6, 1, 0.3)};
+  poor.elements = {1};
+  const std::string vtu = vtu_text(square(2), {poor}, "");
+  const auto cells = array<double>(vtu, "poor");
+  REQUIRE(cells.size() == 36);
+  for (std::size_t k = 0; k < 36; ++k) CHECK((k >= 6 && k < 12) == !std::isnan(cells[k]));
+  for (std::size_t k = 6; k < 12; ++k) CHECK(cells[k] == 0.3);
+  const Field none{"none", Field::Kind::ElementNode, Eigen::MatrixXd(6, 0)};
+  CHECK_THAT(vtu_text(square(2), {none}, ""), !Catch::Contains("Name=\"none\""));
+  poor.elements = {2};
+  REQUIRE_THROWS_WITH(vtu_text(square(2), {poor}, ""), "vtu: field 'poor' lists triangle 2 of 2");
 }
 
 TEST_CASE("vtu_text writes order 1 as VTK's linear cells", "[io][write_vtu]") {

@@ -97,6 +97,13 @@ def gmsh_to_vtk(etype, cell):
     return match
 
 
+# The field names: those of the .msh views (the measure registry's).
+VALIDITY = "homesh: certified minJ/maxJ"
+Q4_MIN = "homesh: Q4 Equal volume, element minimum"
+Q4_NODES = "homesh: Q4 Equal volume, at nodes"
+POOR = "homesh: elements of certified minJ/maxJ < 0.5"
+
+
 def written(tmp_path, p, measures="Q4"):
     homesh.mesh(factor=4)
     if p > 1:
@@ -120,10 +127,11 @@ def test_vtk_reads_the_cells_nodes_and_fields_of_the_msh(model, tmp_path, p):
     assert sorted(tags) == sorted(elements)
     types = vtk_to_numpy(grid.GetCellTypesArray())
     geometrical, physical = cell_array(grid, "gmsh:geometrical"), cell_array(grid, "gmsh:physical")
-    node_values = cell_array(grid, "Q4 at nodes")
+    node_values = cell_array(grid, Q4_NODES)
     assert node_values.shape[1] == (p + 1) * (p + 2) // 2
     point_of = {}  # .msh node tag -> .vtu point
     smallest = {}  # .msh node tag -> smallest Q4 of the triangles there
+    assert set(views) - {POOR} == {VALIDITY, Q4_MIN, Q4_NODES}
     rng = np.random.default_rng(p)
     for c in range(grid.GetNumberOfCells()):
         cell = grid.GetCell(c)
@@ -154,7 +162,9 @@ def test_vtk_reads_the_cells_nodes_and_fields_of_the_msh(model, tmp_path, p):
         assert physical[c] == (min(groups) if len(groups) else 0)
         # Fields: the views' values, NaN on the lines.
         for name, (kind, data) in views.items():
-            values = cell_array(grid, name if kind == "ElementData" else name + " at nodes")[c]
+            if name == POOR:  # a view of the few poor triangles: NaN on the others
+                continue
+            values = cell_array(grid, name)[c]
             if dim == 1:
                 assert np.isnan(values).all()
             elif kind == "ElementData":
@@ -166,15 +176,23 @@ def test_vtk_reads_the_cells_nodes_and_fields_of_the_msh(model, tmp_path, p):
                     t = nodes[k]
                     smallest[t] = min(smallest.get(t, np.inf), data[int(tags[c])][k])
     assert sorted(point_of.values()) == list(range(grid.GetNumberOfPoints()))
-    q4 = vtk_to_numpy(grid.GetPointData().GetArray("Q4"))
+    q4 = vtk_to_numpy(grid.GetPointData().GetArray(Q4_NODES + ", smallest at the point"))
     assert all(abs(q4[point_of[t]] - v) <= ASCII * (1 + abs(v)) for t, v in smallest.items())
-    assert set(views) == {"minJ/maxJ", "Q4 min", "Q4"}
+    # The poor triangles' view: their certified minJ/maxJ at every node, NaN elsewhere.
+    # (A view of no triangle is in neither file.)
+    ratio = cell_array(grid, VALIDITY)
+    assert (POOR in views) == (grid.GetCellData().GetArray(POOR) is not None) == (ratio < 0.5).any()
+    if POOR in views:
+        poor = cell_array(grid, POOR)
+        listed = ~np.isnan(poor).all(axis=1)
+        assert np.array_equal(listed, ratio < 0.5)
+        assert np.allclose(poor[listed], ratio[listed][:, None])
 
 
 def test_the_certified_validity_is_always_a_cell_field(model, tmp_path):
     _, vtu = written(tmp_path, 3, measures=None)
     grid = read_vtu(vtu)
-    ratio = cell_array(grid, "minJ/maxJ")
+    ratio = cell_array(grid, VALIDITY)
     triangles = vtk_to_numpy(grid.GetCellTypesArray()) == vtk.VTK_LAGRANGE_TRIANGLE
     assert triangles.sum() == homesh.validity()["triangles"]
     assert ratio[triangles].min() == pytest.approx(homesh.validity()["worst"], rel=1e-12)
@@ -191,7 +209,7 @@ def test_the_cli_writes_the_same_vtu_as_the_api(model, tmp_path):
     for name in ("gmsh:element", "gmsh:geometrical", "gmsh:physical"):
         assert np.array_equal(cell_array(api, name), cell_array(by_cli, name))
     # The CLI read the nodes back from the ASCII .msh, to 16 digits.
-    for name in ("minJ/maxJ", "Q4 min", "Q4 at nodes"):
+    for name in (VALIDITY, Q4_MIN, Q4_NODES):
         assert np.allclose(cell_array(api, name), cell_array(by_cli, name), rtol=1e-12,
                            atol=1e-12, equal_nan=True)
     assert np.allclose(vtk_to_numpy(api.GetPoints().GetData()),
@@ -211,7 +229,7 @@ def test_an_invalid_mesh_is_written_to_vtu_only_when_asked(model, tmp_path):
         homesh.write(str(out))
     assert list(tmp_path.iterdir()) == []
     homesh.write(str(out), keep_invalid=True)
-    assert np.nanmin(cell_array(read_vtu(out), "minJ/maxJ")) < 0
+    assert np.nanmin(cell_array(read_vtu(out), VALIDITY)) < 0
 
 
 def test_a_users_node_view_is_point_data_and_a_list_view_is_left_out(model, tmp_path, capfd):
@@ -229,7 +247,7 @@ def test_a_users_node_view_is_point_data_and_a_list_view_is_left_out(model, tmp_
     assert "Error" not in printed.out + printed.err  # Gmsh's, for the list view's missing model data
     grid = read_vtu(out)
     points = vtk_to_numpy(grid.GetPoints().GetData())
-    values = vtk_to_numpy(grid.GetPointData().GetArray("x + 2y"))
+    values = vtk_to_numpy(grid.GetPointData().GetArray("x + 2y, smallest at the point"))
     assert np.allclose(values, points[:, 0] + 2 * points[:, 1], rtol=0, atol=1e-15)
     assert grid.GetCellData().GetArray("a .pos view") is None
     assert grid.GetPointData().GetArray("a .pos view") is None

@@ -61,7 +61,8 @@ def shots(request, vtu):
     # ParaView's start-up costs ~10 s: it draws the curved picture only.
     for name, level in (("curved", 3), ("straight", 0))[:1 if program == "paraview" else 2]:
         png = vtu.replace(".vtu", f"_{program}_{name}.png")
-        subprocess.run(["xvfb-run", "-a", *PROGRAMS[program], vtu, png, "--field", "Q4",
+        subprocess.run(["xvfb-run", "-a", *PROGRAMS[program], vtu, png, "--field",
+                        "homesh: Q4 Equal volume, at nodes, smallest at the point",
                         "--subdivision", str(level), "--centre", "0", "0", "--scale", str(SCALE),
                         "--size", str(SIZE), str(SIZE)], check=True, capture_output=True,
                        timeout=180)
