@@ -15,9 +15,10 @@ paraview and python3-paraview), under `xvfb-run -a` without a display; the
 --centre and --scale (half the picture's height, in model units) fix the camera;
 by default the mesh fills the picture.
 """
-import argparse
 
 from paraview import simple
+
+from shot_options import shot_parser
 
 
 def render(vtu, png, field="homesh: certified minJ/maxJ", subdivision=3, centre=None, scale=None,
@@ -54,16 +55,8 @@ def render(vtu, png, field="homesh: certified minJ/maxJ", subdivision=3, centre=
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("vtu")
-    parser.add_argument("png")
-    parser.add_argument("--field", default="homesh: certified minJ/maxJ",
-                        help="cell or point field to colour by")
-    parser.add_argument("--subdivision", type=int, default=3,
-                        help="Nonlinear Subdivision Level (0: straight cells)")
-    parser.add_argument("--centre", type=float, nargs=2, metavar=("X", "Y"))
-    parser.add_argument("--scale", type=float, help="half the picture's height, model units")
-    parser.add_argument("--size", type=int, nargs=2, default=(600, 600), metavar=("W", "H"))
+    parser = shot_parser(__doc__.split("\n\n")[0],
+                         "Nonlinear Subdivision Level (0: straight cells)")
     parser.add_argument("--edges", action="store_true",
                         help="Surface With Edges: the cells' curved edges drawn too")
     parser.add_argument("--low", type=float, default=0.0, help="the colour scale's low end")

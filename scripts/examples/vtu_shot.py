@@ -15,9 +15,10 @@ Usage: vtu_shot.py VTU PNG [--field NAME] [--subdivision N] [--centre X Y]
 --centre and --scale (half the picture's height, in model units) fix the camera;
 by default the mesh fills the picture.
 """
-import argparse
 
 import vtk
+
+from shot_options import shot_parser
 
 
 def render(vtu, png, field="homesh: certified minJ/maxJ", subdivision=3, centre=None, scale=None,
@@ -87,16 +88,8 @@ def render(vtu, png, field="homesh: certified minJ/maxJ", subdivision=3, centre=
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("vtu")
-    parser.add_argument("png")
-    parser.add_argument("--field", default="homesh: certified minJ/maxJ",
-                        help="cell or point field to colour by")
-    parser.add_argument("--subdivision", type=int, default=3,
-                        help="nonlinear subdivision level (ParaView's; 0: straight cells)")
-    parser.add_argument("--centre", type=float, nargs=2, metavar=("X", "Y"))
-    parser.add_argument("--scale", type=float, help="half the picture's height, model units")
-    parser.add_argument("--size", type=int, nargs=2, default=(600, 600), metavar=("W", "H"))
+    parser = shot_parser(__doc__.split("\n\n")[0],
+                         "nonlinear subdivision level (ParaView's; 0: straight cells)")
     a = parser.parse_args()
     render(a.vtu, a.png, a.field, a.subdivision, a.centre, a.scale, tuple(a.size))
     print(a.png)

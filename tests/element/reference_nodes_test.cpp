@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "../support/node_rows.h"
 #include "core/error.h"
 #include "core/mesh.h"
 
@@ -17,20 +18,7 @@ namespace {
 
 // Rows "kind p c0 c1 ..." of gmsh_reference_nodes.txt, keyed by (kind, p).
 std::map<std::pair<std::string, int>, std::vector<double>> gmsh_nodes() {
-  std::ifstream in(HOMESH_SOURCE_DIR "/tests/element/gmsh_reference_nodes.txt");
-  REQUIRE(in.good());
-  std::map<std::pair<std::string, int>, std::vector<double>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    std::string kind;
-    int p = 0;
-    fields >> kind >> p;
-    std::vector<double>& c = rows[{kind, p}];
-    for (double value; fields >> value;) c.push_back(value);
-  }
-  return rows;
+  return homesh::test::node_rows(HOMESH_SOURCE_DIR "/tests/element/gmsh_reference_nodes.txt");
 }
 
 }  // namespace

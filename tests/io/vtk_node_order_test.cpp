@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "../support/node_rows.h"
 #include "core/error.h"
 #include "core/mesh.h"
 #include "element/reference_nodes.h"
@@ -22,20 +23,7 @@ namespace {
 // Rows "kind p c0 c1 ..." of vtk_reference_nodes.txt (VTK 9.1's own
 // parametric coordinates), keyed by (kind, p).
 std::map<std::pair<std::string, int>, std::vector<double>> vtk_nodes() {
-  std::ifstream in(HOMESH_SOURCE_DIR "/tests/io/vtk_reference_nodes.txt");
-  REQUIRE(in.good());
-  std::map<std::pair<std::string, int>, std::vector<double>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    std::string kind;
-    int p = 0;
-    fields >> kind >> p;
-    std::vector<double>& c = rows[{kind, p}];
-    for (double value; fields >> value;) c.push_back(value);
-  }
-  return rows;
+  return homesh::test::node_rows(HOMESH_SOURCE_DIR "/tests/io/vtk_reference_nodes.txt");
 }
 
 }  // namespace
