@@ -33,6 +33,12 @@ void ensure_entities(const Mesh& m) {
   }
 }
 
+bool is_cad_curve(int tag) {
+  std::string type;
+  gmsh::model::getType(1, tag, type);
+  return type.rfind("Discrete", 0) != 0;
+}
+
 void add_nodes(const Mesh& m) {
   std::map<std::pair<int, int>, std::vector<int>> by_entity;
   for (int i = 0; i < m.num_nodes(); ++i)
@@ -46,6 +52,19 @@ void add_nodes(const Mesh& m) {
       coord.insert(coord.end(), {m.x(0, i), m.x(1, i), 0.0});
       all_u = all_u && std::isfinite(m.node_class[i].u);
       param.push_back(m.node_class[i].u);
+    }
+    if (!all_u && entity.first == 1 && is_cad_curve(entity.second)) {
+      // Nodes a stage placed on a curve without its parameter (layers' nodes
+      // along the boundary curves where a wall ends): Gmsh's projection gives
+      // it, so a file saved with Mesh.SaveParametric keeps every node's.
+      for (std::size_t k = 0; k < nodes.size(); ++k)
+        if (!std::isfinite(param[k])) {
+          std::vector<double> u;
+          gmsh::model::getParametrization(1, entity.second, {coord[3 * k], coord[3 * k + 1], 0.0},
+                                          u);
+          param[k] = u.at(0);
+        }
+      all_u = std::all_of(param.begin(), param.end(), [](double u) { return std::isfinite(u); });
     }
     if (!all_u) param.clear();
     gmsh::model::mesh::addNodes(entity.first, entity.second, tags, coord, param);

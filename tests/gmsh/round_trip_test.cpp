@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <string>
 
 #include "../support/gmsh_session.h"
@@ -130,4 +132,29 @@ TEST_CASE("write_msh records provenance and a sidecar of the views' styles", "[g
           std::string::npos);
   REQUIRE(options.find("View[homesh_first_view + 2]") == std::string::npos);
   REQUIRE(options.find("View[0]") == std::string::npos);
+}
+
+TEST_CASE("write_model gives nodes on a CAD curve without a parameter Gmsh's", "[gmsh]") {
+  test::GmshSession session;
+  test::make_plate_with_hole(1);
+  Mesh m = gmsh_adapter::read_model("plate");
+  // Forget the parameter of every other node on a curve, as a stage that adds
+  // nodes along a boundary curve leaves them.
+  std::map<int, std::vector<std::pair<int, double>>> known;  // curve -> (node, u)
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_class[i].dim == 1) {
+      known[m.node_class[i].tag].push_back({i, m.node_class[i].u});
+      if (i % 2 == 0) m.node_class[i].u = std::numeric_limits<double>::quiet_NaN();
+    }
+  REQUIRE(known.size() >= 4);
+  gmsh_adapter::write_model(m);
+  for (const auto& [curve, nodes] : known) {
+    std::vector<std::size_t> tags;
+    std::vector<double> coord, param;
+    gmsh::model::mesh::getNodes(tags, coord, param, 1, curve, false, true);
+    REQUIRE(param.size() == tags.size());  // every node of the curve has its parameter
+    REQUIRE(tags.size() == nodes.size());
+    for (std::size_t k = 0; k < tags.size(); ++k)
+      CHECK(param[k] == Approx(nodes[k].second).margin(1e-9));
+  }
 }
