@@ -1,14 +1,45 @@
 #include "curving/curve_mesh.h"
 
+#include <chrono>
+
 #include "core/raise_order.h"
+#include "quality/mesh_validity.h"
 
 namespace homesh {
+namespace {
+
+double since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
 
 CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh& raised)>& place,
-                       const CurveOptions& opt) {
+                       const CurveOptions& opt, const CurveEvaluator* curves) {
+  const auto start = std::chrono::steady_clock::now();
   Mesh raised = raise_order(m, opt.order);
   Eigen::Matrix2Xd target = place(raised);
   const std::vector<bool> boundary = boundary_nodes(raised);
+  CurveResult r;
+
+  // 1. Placed: the boundary nodes at their targets, the interior straight.
+  if (opt.accept_placed <= 1) {
+    Mesh placed = raised;
+    for (int i = 0; i < placed.num_nodes(); ++i)
+      if (boundary[i]) placed.x.col(i) = target.col(i);
+    const MeshValidity v = mesh_validity(placed, opt.optimiser.bounds);
+    r.placed_worst = v.invalid == 0 ? v.worst : 0;
+    if (v.invalid == 0 && v.worst >= opt.accept_placed) {
+      r.placed = true;
+      r.worst_ratio = v.worst;
+      r.mesh = std::move(placed);
+      r.seconds = since(start);
+      return r;
+    }
+  }
+
+  // 2. Elastic.
+  const auto elastic = std::chrono::steady_clock::now();
   std::vector<bool> held = boundary;
   if (opt.fixed_vertices) {
     const std::vector<bool> vertex = vertex_nodes(raised);
@@ -18,7 +49,6 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
         target.col(i) = raised.x.col(i);
       }
   }
-  CurveResult r;
   r.deform = deform_mesh(raised, target, held, opt.deform);
   const bool restricted = opt.fixed_vertices || opt.deform.reach > 0 || opt.deform.layers > 0;
   if (!r.deform.complete && restricted) {
@@ -29,6 +59,22 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     whole.layers = 0;
     r.deform = deform_mesh(raised, target, boundary, whole);
   }
+  r.elastic_seconds = since(elastic);
+  r.worst_ratio = r.deform.worst_ratio;
+
+  // 3. Optimised, where the elastic result is valid and leaves poor elements.
+  if (opt.optimise && r.deform.complete && r.deform.worst_ratio < opt.optimiser.threshold) {
+    const auto optimise = std::chrono::steady_clock::now();
+    r.optimised = true;
+    r.optimisation = optimise_mesh(r.deform.mesh, std::vector<bool>(raised.num_nodes(), false),
+                                   opt.optimiser, curves);
+    r.mesh = std::move(r.optimisation.mesh);
+    r.worst_ratio = r.optimisation.worst_after;
+    r.optimise_seconds = since(optimise);
+  } else {
+    r.mesh = std::move(r.deform.mesh);
+  }
+  r.seconds = since(start);
   return r;
 }
 
