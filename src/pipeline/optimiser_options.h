@@ -8,7 +8,7 @@
 
 namespace homesh {
 
-/// Adds threshold and slide to `table`, read into the OptimiseOptions that
+/// Adds threshold, sweeps and slide to `table`, read into the OptimiseOptions that
 /// `optimiser` gives (a pointer to a data member of T or a callable T& -> OptimiseOptions&).
 template <class T, class Optimiser>
 void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
@@ -16,6 +16,9 @@ void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
   table.add(
       "threshold", [o](T& t) -> double& { return o(t).threshold; }, real(0, 1, "(]"),
       "elements whose certified minJ/maxJ is below this are optimised");
+  table.add(
+      "sweeps", [o](T& t) -> int& { return o(t).max_sweeps; }, integer(0, 10000),
+      "most node-by-node Newton sweeps per patch");
   table.add(
       "slide", [o](T& t) -> OptimiseOptions::Slide& { return o(t).slide; },
       choice<OptimiseOptions::Slide>({{"all", OptimiseOptions::Slide::all},

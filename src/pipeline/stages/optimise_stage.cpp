@@ -54,8 +54,6 @@ Stage optimise_stage() {
   add_optimiser_options(t, [](OptimiseOptions& o) -> OptimiseOptions& { return o; });
   t.add("layers", &OptimiseOptions::layers, integer(0, 100),
         "rings of neighbouring elements added round the poor ones to make the patches");
-  t.add("sweeps", &OptimiseOptions::max_sweeps, integer(0, 10000),
-        "most node-by-node Newton sweeps per patch");
   t.add("tolerance", &OptimiseOptions::tolerance, real(0),
         "a sweep lowering the patch's energy by less than this fraction ends the patch");
   t.add("vertices", &OptimiseOptions::free_vertices,
