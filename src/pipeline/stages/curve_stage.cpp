@@ -120,8 +120,9 @@ Stage curve_stage() {
       "the deformation so far (force_q17, heat_*, metric_*, stiff_*) see only the straight "
       "mesh in one increment: give them 4 or more");
   t.add("vertices", &CurveOptions::fixed_vertices, choice<bool>({{"fixed", true}, {"free", false}}),
-        "fixed: the linear mesh's vertices stay (boundary-layer heights kept exactly), only the "
-        "nodes the order raising adds move; free: every interior node moves (the thesis)");
+        "elastic solve: fixed: the linear mesh's vertices stay (boundary-layer heights kept "
+        "exactly), only the nodes the order raising adds move; free: every interior node moves "
+        "(the thesis); the optimiser moves interior vertices either way");
   t.add(
       "layers", [](CurveOptions& o) -> int& { return o.deform.layers; }, integer(0, 1000),
       "0: no effect; k > 0: solve only on the elements within k element layers of the "
@@ -150,7 +151,8 @@ Stage curve_stage() {
   return make_stage<CurveOptions>(
       "curve",
       "order p with boundary nodes on the CAD (or on splines rebuilt from a bare .msh), "
-      "interior by the elastic analogy, valid",
+      "interior straight if that is good enough, else by the elastic analogy, then the "
+      "optimiser round the elements left poor (wall nodes sliding on the CAD), valid",
       t, run);
 }
 
