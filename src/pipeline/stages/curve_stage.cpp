@@ -65,6 +65,11 @@ void run(Context& ctx, const CurveOptions& o) {
         "solving on the whole mesh with every interior node free",
         restricted, 100 * c.restricted_reached);
   }
+  if (c.freed_vertices)
+    ctx.log.info(
+        "curve: the solve with the vertices held left elements below {:g}; solved "
+        "again with them free",
+        o.optimiser.threshold);
   const DeformResult& r = c.deform;
   if (!c.placed && !r.complete)
     throw Error(fmt::format(
