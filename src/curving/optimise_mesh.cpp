@@ -106,8 +106,9 @@ class PatchOptimiser {
     return X_;
   }
 
-  double element_energy(int le, Eigen::Matrix2Xd* gradient) const {
-    return distortion_energy(nodes(le), tab_, target_[le], opt_.energy, gradient);
+  // Energy of patch element le and, if asked, its gradient by the element's node slot `node`.
+  double element_energy(int le, Eigen::Matrix2Xd* gradient, int node = -1) const {
+    return distortion_energy(nodes(le), tab_, target_[le], opt_.energy, gradient, node);
   }
 
   // Energy of node i's star and its gradient by the node's position.
@@ -115,7 +116,7 @@ class PatchOptimiser {
     double E = 0;
     if (g) g->setZero();
     for (const Slot& s : star_[i]) {
-      E += element_energy(s.element, g ? &grad_ : nullptr);
+      E += element_energy(s.element, g ? &grad_ : nullptr, s.node);
       if (!std::isfinite(E)) return E;
       if (g) *g += grad_.col(s.node);
     }
