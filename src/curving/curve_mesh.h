@@ -12,14 +12,13 @@
 //    are (boundary-layer heights kept exactly) and only the nodes the order
 //    raising added move; if that solve, or one restricted by deform.layers or
 //    deform.reach, cannot reach the whole motion, the whole mesh is solved
-//    again with every interior node free (the thesis' setting). If the held
-//    solve is valid but leaves elements below optimiser.threshold (and
-//    `optimise`), it is solved again with the vertices free in the same
-//    region, and that result kept if valid (the optimiser does better from it).
+//    again with every interior node free (the thesis' setting).
 // 3. Optimised: if `optimise` and elements are left below
 //    optimiser.threshold, the high-order optimiser (optimise_mesh.h) works on
 //    patches round them, boundary nodes sliding along the curves `curves`
-//    evaluates (held without one).
+//    evaluates (held without one). If elements are still below the threshold
+//    after a solve with the vertices held, the solve is done again with them
+//    free, optimised likewise, and the better of the two results kept.
 #include <Eigen/Core>
 #include <functional>
 
@@ -65,7 +64,7 @@ struct CurveResult {
   DeformResult deform;            ///< of the last solve (if any)
   bool fell_back = false;         ///< the restricted solve fell short: the whole mesh was solved
   double restricted_reached = 0;  ///< the restricted solve's reached fraction, if it fell back
-  bool freed_vertices = false;    ///< the held solve was poor; the free one's is kept
+  bool freed_vertices = false;    ///< the result comes from step 3's solve with vertices free
   bool optimised = false;         ///< step 3 ran
   OptimiseResult optimisation;    ///< its result (its mesh moved to `mesh`)
   double seconds = 0;             ///< wall time of the whole curving

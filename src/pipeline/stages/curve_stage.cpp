@@ -67,8 +67,8 @@ void run(Context& ctx, const CurveOptions& o) {
   }
   if (c.freed_vertices)
     ctx.log.info(
-        "curve: the solve with the vertices held left elements below {:g}; solved "
-        "again with them free",
+        "curve: optimised from the solve with the vertices held, elements stayed below {:g}; "
+        "solved again with them free, optimised better from there",
         o.optimiser.threshold);
   const DeformResult& r = c.deform;
   if (!c.placed && !r.complete)
