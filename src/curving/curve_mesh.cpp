@@ -8,6 +8,8 @@
 namespace homesh {
 namespace {
 
+constexpr double kPassGain = 0.02;  // least lift of the worst minJ/maxJ worth another pass
+
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -69,9 +71,23 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
 
   // 3. Optimised, where the elastic result is valid and leaves poor elements.
   const std::vector<bool> none(raised.num_nodes(), false);
+  // Passes of the optimiser from the current solve, each from where the last stopped, while
+  // elements stay below the threshold and a pass still lifts the worst by kPassGain.
   auto optimise = [&] {
     const auto t = std::chrono::steady_clock::now();
     OptimiseResult o = optimise_mesh(r.deform.mesh, none, opt.optimiser, curves);
+    for (int pass = 1; pass < opt.optimise_passes && o.worst_after < opt.optimiser.threshold;
+         ++pass) {
+      OptimiseResult next = optimise_mesh(o.mesh, none, opt.optimiser, curves);
+      const bool gained = next.worst_after > o.worst_after + kPassGain;
+      next.worst_before = o.worst_before;
+      next.poor_before = o.poor_before;
+      next.patches += o.patches;
+      next.accepted += o.accepted;
+      next.sweeps += o.sweeps;
+      o = std::move(next);
+      if (!gained) break;
+    }
     r.optimise_seconds += since(t);
     return o;
   };
