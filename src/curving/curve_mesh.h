@@ -2,19 +2,31 @@
 // Curving a linear (or any-order) mesh to order p: the order is raised with
 // straight sides (core/raise_order.h), the boundary nodes go to the targets
 // `place` gives (on the CAD, or on curves rebuilt from the boundary:
-// boundary_reconstruction.h), and the interior follows the augmented elastic
-// analogy (deform_mesh.h) with every element certified valid. With
-// fixed_vertices the linear mesh's interior vertices are held where they are
-// (boundary-layer heights kept exactly) and only the nodes the order raising
-// added move; if that solve, or one restricted by deform.layers or
-// deform.reach, cannot reach the whole motion, the whole mesh is solved again
-// with every interior node free (the thesis' setting).
+// boundary_reconstruction.h), and then:
+// 1. Placed: if the mesh with only the boundary nodes moved (the interior
+//    straight, as Gmsh's setOrder leaves it) is certified valid with every
+//    minJ/maxJ at least `accept_placed`, it is the result (no solve).
+// 2. Elastic: the interior follows the augmented elastic analogy
+//    (deform_mesh.h) with every element certified valid. With
+//    fixed_vertices the linear mesh's interior vertices are held where they
+//    are (boundary-layer heights kept exactly) and only the nodes the order
+//    raising added move; if that solve, or one restricted by deform.layers or
+//    deform.reach, cannot reach the whole motion, the whole mesh is solved
+//    again with every interior node free (the thesis' setting).
+// 3. Optimised: if `optimise` and elements are left below
+//    optimiser.threshold, the high-order optimiser (optimise_mesh.h) works on
+//    patches round them, boundary nodes sliding along the curves `curves`
+//    evaluates (held without one). If elements are still below the threshold
+//    after a solve with the vertices held, the solve is done again with them
+//    free, optimised likewise, and the better of the two results kept.
 #include <Eigen/Core>
 #include <functional>
 
 #include "core/mesh.h"
 #include "curving/boundary_reconstruction.h"
+#include "curving/curve_evaluator.h"
 #include "curving/deform_mesh.h"
+#include "curving/optimise_mesh.h"
 
 namespace homesh {
 
@@ -24,20 +36,54 @@ struct CurveOptions {
   DeformOptions deform;        ///< the analogy; its defaults are the curve stage's
   /// Without CAD: how the boundary curves are rebuilt (used by the caller's `place`).
   BoundaryReconstructionOptions boundary;
+  /// Step 1's bar: the placed mesh is kept if its worst certified minJ/maxJ is at
+  /// least this (> 1: never, always solve).
+  double accept_placed = 0.9;
+  /// Step 3 on or off.
+  bool optimise = true;
+  /// Step 3's optimiser: OptimiseOptions' defaults (threshold 0.8, wall nodes sliding)
+  /// but free interior vertices and 60 sweeps. Measured on issue 16's corpus
+  /// (scripts/bench/README.md), worst minJ/maxJ after curving, ellipse10_bl_1e-4 p = 2 /
+  /// naca0012_bl_1e-3_coarse p = 4: solve alone 0.06 / 0.13; optimised with the wall
+  /// held, 20 sweeps: 0.64 / - (vertices held), 0.66 / 0.54 (free); wall sliding 0.71 /
+  /// 0.69; 60 sweeps 0.78 / 0.81 (200: 0.85 / 0.84 at 3x the time). The node-by-node sweeps
+  /// converge slowly in thin layers: each sweep moves a node within its own star only.
+  /// Most passes of the optimiser from one solve: another pass (from where the last
+  /// stopped) while elements stay below the threshold and the last pass lifted the worst
+  /// by 0.02 or more. naca0012_bl_1e-3_coarse p = 3: 0.72 after one pass of 60 sweeps,
+  /// 0.84 after 200 sweeps.
+  int optimise_passes = 3;
+  OptimiseOptions optimiser = [] {
+    OptimiseOptions o;
+    o.free_vertices = true;
+    o.max_sweeps = 60;
+    return o;
+  }();
 };
 
 struct CurveResult {
-  DeformResult deform;            ///< of the last solve
+  Mesh mesh;                      ///< the curved mesh (valid if deform.complete or placed)
+  double worst_ratio = 1;         ///< its worst certified minJ/maxJ
+  bool placed = false;            ///< step 1 sufficed: no solve, no optimisation
+  double placed_worst = 0;        ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
+  DeformResult deform;            ///< of the last solve (if any)
   bool fell_back = false;         ///< the restricted solve fell short: the whole mesh was solved
   double restricted_reached = 0;  ///< the restricted solve's reached fraction, if it fell back
+  bool freed_vertices = false;    ///< the result comes from step 3's solve with vertices free
+  bool optimised = false;         ///< step 3 ran
+  OptimiseResult optimisation;    ///< its result (its mesh moved to `mesh`)
+  double seconds = 0;             ///< wall time of the whole curving
+  double elastic_seconds = 0;     ///< of which the elastic solves
+  double optimise_seconds = 0;    ///< and the optimiser
 };
 
 /// m at order opt.order with its boundary nodes at place(raised) (2 by nodes
 /// of the raised mesh; only the columns of boundary_nodes(raised) are read;
 /// `place` may update the raised mesh's node classification, e.g. curve parameters)
-/// and its interior by the analogy. result.deform.complete says whether the
-/// whole motion was reached with every element valid. Throws as deform_mesh.
+/// and its interior as above. The result is valid if result.placed or
+/// result.deform.complete (the elastic solve reached the whole motion with
+/// every element valid). Throws as deform_mesh.
 CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh& raised)>& place,
-                       const CurveOptions& opt = {});
+                       const CurveOptions& opt = {}, const CurveEvaluator* curves = nullptr);
 
 }  // namespace homesh

@@ -20,18 +20,22 @@ Eigen::Matrix2d cofactor(const Eigen::Matrix2d& J) {
 
 double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
                          const Eigen::Matrix2d& T, const DistortionEnergyOptions& opt,
-                         Eigen::Matrix2Xd* gradient) {
+                         Eigen::Matrix2Xd* gradient, int node) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const int q = static_cast<int>(tab.rule.weights.size());
   const Eigen::VectorXd& w = tab.rule.weights;
   thread_local std::vector<Eigen::Matrix2d> J;
   thread_local std::vector<double> d;
+  // dX/du, dX/dv at every point (coefficient products: the matrices are small).
+  thread_local Eigen::Matrix2Xd Ju, Jv;
   J.resize(q);
   d.resize(q);
+  Ju.noalias() = X.lazyProduct(tab.dNdu);
+  Jv.noalias() = X.lazyProduct(tab.dNdv);
   double A = 0;
   for (int i = 0; i < q; ++i) {
-    J[i].col(0) = X * tab.dNdu.col(i);
-    J[i].col(1) = X * tab.dNdv.col(i);
+    J[i].col(0) = Ju.col(i);
+    J[i].col(1) = Jv.col(i);
     d[i] = J[i].determinant();
     if (!(d[i] > 0)) return kInf;
     A += w(i) * d[i];
@@ -67,15 +71,26 @@ double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab
   // E = N / A: dE/dJ_i = (1/A) dN/dJ_i|_A + (dN/dA / A - N / A^2) dA/dJ_i, dA/dJ_i = w_i cof J_i;
   // dE/dX = sum_i dE/dJ_i D_i^T with J_i = X D_i, D_i = [dN/du dN/dv] at point i.
   const double coupling = dN_dA / A - N / (A * A);
-  gradient->setZero(2, X.cols());
+  // dE/dJ_i's columns at every point, then dE/dX = Gu dNdu^T + Gv dNdv^T (or one column).
+  thread_local Eigen::Matrix2Xd Gu, Gv;
+  Gu.resize(2, q);
+  Gv.resize(2, q);
   for (int i = 0; i < q; ++i) {
     const Eigen::Matrix2d C = cofactor(J[i]);
     const Eigen::Matrix2d ds = J[i] * M / (d[i] * detT) - (s[i] + 1) / d[i] * C;
     const Eigen::Matrix2d dtheta = ds + alpha * zprime[i] / (2 * A) * C;
     const double tr = theta_r1[i] * theta[i], tr1 = r * theta_r1[i];
     const Eigen::Matrix2d G = w(i) * ((tr * C + d[i] * tr1 * dtheta) / A + coupling * C);
-    gradient->noalias() += G.col(0) * tab.dNdu.col(i).transpose();
-    gradient->noalias() += G.col(1) * tab.dNdv.col(i).transpose();
+    Gu.col(i) = G.col(0);
+    Gv.col(i) = G.col(1);
+  }
+  if (node >= 0) {
+    gradient->setZero(2, X.cols());
+    gradient->col(node).noalias() =
+        Gu * tab.dNdu.row(node).transpose() + Gv * tab.dNdv.row(node).transpose();
+  } else {
+    gradient->noalias() = Gu.lazyProduct(tab.dNdu.transpose());
+    gradient->noalias() += Gv.lazyProduct(tab.dNdv.transpose());
   }
   return E;
 }

@@ -50,9 +50,10 @@ struct DistortionEnergyOptions {
 /// E_e of the element with nodes X (2 by (p+1)(p+2)/2, Gmsh order) whose basis
 /// is tabulated in `tab`, with target inverse T (2 by 2, det T > 0). If
 /// `gradient` is given it receives dE_e/dX (2 by n, column k the derivative by
-/// node k's (x, y)), unless E_e is +infinity.
+/// node k's (x, y)), unless E_e is +infinity; with node >= 0 only that column
+/// (the others zero: what a node-by-node sweep needs, at a fraction of the cost).
 double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
                          const Eigen::Matrix2d& T, const DistortionEnergyOptions& opt,
-                         Eigen::Matrix2Xd* gradient = nullptr);
+                         Eigen::Matrix2Xd* gradient = nullptr, int node = -1);
 
 }  // namespace homesh

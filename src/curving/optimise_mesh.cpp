@@ -22,14 +22,24 @@ constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
 constexpr int kMaxHalvings = 20;
 constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
 
+// Nodes sliding along curves: slide_tag[i] the curve of node i (-1: not sliding),
+// u[i] its parameter, kept unwrapped on closed curves while optimising.
+struct Sliding {
+  const CurveEvaluator* curves = nullptr;
+  std::vector<int> tag;
+  std::vector<double> u;
+  std::vector<CurveRange> range;  // of tag[i]'s curve
+};
+
 // One patch being optimised on the shared coordinates x (its free nodes are its own).
 class PatchOptimiser {
  public:
   // floor: the patch's worst certified minJ/maxJ at the start, which no step may
   // take an element below.
-  PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, const OptimisationPatch& patch,
-                 const ElementTabulation& tab, const OptimiseOptions& opt, double floor)
-      : m_(m), x_(x), patch_(patch), tab_(tab), opt_(opt), floor_(floor) {
+  PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, Sliding& sliding,
+                 const OptimisationPatch& patch, const ElementTabulation& tab,
+                 const OptimiseOptions& opt, double floor)
+      : m_(m), x_(x), sliding_(sliding), patch_(patch), tab_(tab), opt_(opt), floor_(floor) {
     const int ne = static_cast<int>(patch.elements.size());
     target_.resize(ne);
     energy_.resize(ne);
@@ -96,8 +106,9 @@ class PatchOptimiser {
     return X_;
   }
 
-  double element_energy(int le, Eigen::Matrix2Xd* gradient) const {
-    return distortion_energy(nodes(le), tab_, target_[le], opt_.energy, gradient);
+  // Energy of patch element le and, if asked, its gradient by the element's node slot `node`.
+  double element_energy(int le, Eigen::Matrix2Xd* gradient, int node = -1) const {
+    return distortion_energy(nodes(le), tab_, target_[le], opt_.energy, gradient, node);
   }
 
   // Energy of node i's star and its gradient by the node's position.
@@ -105,7 +116,7 @@ class PatchOptimiser {
     double E = 0;
     if (g) g->setZero();
     for (const Slot& s : star_[i]) {
-      E += element_energy(s.element, g ? &grad_ : nullptr);
+      E += element_energy(s.element, g ? &grad_ : nullptr, s.node);
       if (!std::isfinite(E)) return E;
       if (g) *g += grad_.col(s.node);
     }
@@ -137,11 +148,77 @@ class PatchOptimiser {
     return {height, longest};
   }
 
+  // Accepts node i's new position if its star's energy E is finite, lowers E0 enough
+  // (Armijo: by at least kArmijo t |slope|) and every element round it is certified;
+  // then updates the stored energies and wakes the neighbours.
+  bool accept(int i, double E0, double t, double slope) {
+    const double E = star_energy(i, nullptr);
+    if (!(std::isfinite(E) && E < E0 + kArmijo * t * slope && star_certified(i))) return false;
+    // Moves that lower the star's energy by less than kNegligible of it do not
+    // wake the neighbours.
+    const bool moved = E0 - E > kNegligible * E0;
+    if (moved) ++clock_;
+    for (const Slot& s : star_[i]) {
+      energy_[s.element] = element_energy(s.element, nullptr);
+      if (moved) changed_[s.element] = clock_;
+    }
+    return true;
+  }
+
+  // C(u) of sliding node `node`'s curve, u kept in the range of an open curve and
+  // wrapped into it for the evaluator on a closed one.
+  Eigen::Vector2d on_curve(int node, double u, Eigen::Vector2d* tangent) const {
+    return sliding_.curves->point(sliding_.tag[node], wrap_parameter(sliding_.range[node], u),
+                                  tangent);
+  }
+
+  // Node i sliding: a Newton step in its curve parameter u, backtracked as move_node.
+  void slide_node(int i) {
+    const int node = patch_.free_nodes[i];
+    const CurveRange& range = sliding_.range[node];
+    const double u0 = sliding_.u[node];
+    const Eigen::Vector2d x0 = x_.col(node);
+    Eigen::Vector2d g, tangent;
+    on_curve(node, u0, &tangent);
+    const double E0 = star_energy(i, &g);
+    const double speed = tangent.norm();
+    if (!std::isfinite(E0) || speed == 0) return;
+    const double gu = g.dot(tangent);
+    if (gu == 0) return;
+    const auto [height, longest] = star_lengths(i);
+    // Second derivative by a forward difference of dE/du.
+    const double h = 1e-6 * height / speed;
+    Eigen::Vector2d gh, th;
+    x_.col(node) = on_curve(node, u0 + h, &th);
+    const double Eh = star_energy(i, &gh);
+    x_.col(node) = x0;
+    const double H = std::isfinite(Eh) ? (gh.dot(th) - gu) / h : 0;
+    double du = H > 0 ? -gu / H : -std::copysign(height / speed, gu);
+    const double cap = 0.5 * longest / speed;
+    if (std::abs(du) > cap) du = std::copysign(cap, du);
+    if (!range.closed) du = std::clamp(u0 + du, range.a, range.b) - u0;
+    if (du == 0) return;
+    const double slope = gu * du;
+    double t = 1;
+    for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
+      x_.col(node) = on_curve(node, u0 + t * du, nullptr);
+      if (accept(i, E0, t, slope)) {
+        sliding_.u[node] = u0 + t * du;
+        return;
+      }
+    }
+    x_.col(node) = x0;
+  }
+
   // A modified Newton step on node i, backtracked; the node stays if nothing lowers
   // the energy with every element round it certified valid and no worse than the
   // patch's worst at the start (so a patch is reverted only by rounding).
   void move_node(int i) {
     const int node = patch_.free_nodes[i];
+    if (sliding_.tag[node] >= 0) {
+      slide_node(i);
+      return;
+    }
     const Eigen::Vector2d x0 = x_.col(node);
     Eigen::Vector2d g;
     const double E0 = star_energy(i, &g);
@@ -175,24 +252,14 @@ class PatchOptimiser {
     double t = 1;
     for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
       x_.col(node) = x0 + t * dir;
-      const double E = star_energy(i, nullptr);
-      if (std::isfinite(E) && E < E0 + kArmijo * t * slope && star_certified(i)) {
-        // Moves that lower the star's energy by less than kNegligible of it do not
-        // wake the neighbours.
-        const bool moved = E0 - E > kNegligible * E0;
-        if (moved) ++clock_;
-        for (const Slot& s : star_[i]) {
-          energy_[s.element] = element_energy(s.element, nullptr);
-          if (moved) changed_[s.element] = clock_;
-        }
-        return;
-      }
+      if (accept(i, E0, t, slope)) return;
     }
     x_.col(node) = x0;
   }
 
   const Mesh& m_;
   Eigen::Matrix2Xd& x_;
+  Sliding& sliding_;
   const OptimisationPatch& patch_;
   const ElementTabulation& tab_;
   const OptimiseOptions& opt_;
@@ -224,7 +291,7 @@ struct PatchOutcome {
 }  // namespace
 
 OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
-                             const OptimiseOptions& opt) {
+                             const OptimiseOptions& opt, const CurveEvaluator* curves) {
   if (static_cast<int>(fixed.size()) != m.num_nodes())
     throw Error("optimise_mesh: fixed has " + std::to_string(fixed.size()) + " entries for " +
                 std::to_string(m.num_nodes()) + " nodes");
@@ -248,17 +315,34 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   res.invalid = before.invalid;
   res.worst_before = before.worst;
 
-  // Held: the caller's nodes, every node of an element not certified valid (no
-  // untangling: the barrier needs a valid start; such an element ends up in no patch,
-  // and the patches round it still move), and the vertices unless free_vertices.
+  // Sliding: nodes on a curve the evaluator slides, not fixed by the caller, and not
+  // vertices unless opt.slide says so.
+  const std::vector<bool> vertex = vertex_nodes(m);
+  Sliding sliding;
+  sliding.curves = curves;
+  sliding.tag.assign(m.num_nodes(), -1);
+  sliding.u.assign(m.num_nodes(), 0.0);
+  sliding.range.resize(m.num_nodes());
+  if (curves && opt.slide != OptimiseOptions::Slide::none)
+    for (int i = 0; i < m.num_nodes(); ++i) {
+      const NodeClass& c = m.node_class[i];
+      if (fixed[i] || c.dim != 1 || !curves->slides(c.tag)) continue;
+      if (vertex[i] && opt.slide != OptimiseOptions::Slide::all) continue;
+      sliding.tag[i] = c.tag;
+      sliding.u[i] = std::isfinite(c.u) ? c.u : curves->parameter(c.tag, m.x.col(i));
+      sliding.range[i] = curves->range(c.tag);
+    }
+  // Held: the caller's nodes, the boundary nodes that do not slide, every node of an
+  // element not certified valid (no untangling: the barrier needs a valid start; such
+  // an element ends up in no patch, and the patches round it still move), and the
+  // vertices that do not slide unless free_vertices.
   std::vector<bool> held = fixed;
+  const std::vector<bool> boundary = boundary_nodes(m);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    held[i] = held[i] || (sliding.tag[i] < 0 && (boundary[i] || (vertex[i] && !opt.free_vertices)));
   for (int e = 0; e < m.num_triangles(); ++e)
     if (!valid[e])
       for (int k = 0; k < m.tri.rows(); ++k) held[m.tri(k, e)] = true;
-  if (!opt.free_vertices) {
-    const std::vector<bool> vertex = vertex_nodes(m);
-    for (int i = 0; i < m.num_nodes(); ++i) held[i] = held[i] || vertex[i];
-  }
   const std::vector<OptimisationPatch> patches = optimisation_patches(m, poor, opt.layers, held);
   res.patches = static_cast<int>(patches.size());
   const ElementTabulation tab =
@@ -278,8 +362,12 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     }
     if (!all_valid) continue;  // cannot happen (their nodes are held), kept as a guard
     Eigen::Matrix2Xd start(2, patch.free_nodes.size());
-    for (int i = 0; i < start.cols(); ++i) start.col(i) = x.col(patch.free_nodes[i]);
-    PatchOptimiser po(m, x, patch, tab, opt, worst);
+    std::vector<double> start_u(patch.free_nodes.size());
+    for (int i = 0; i < start.cols(); ++i) {
+      start.col(i) = x.col(patch.free_nodes[i]);
+      start_u[i] = sliding.u[patch.free_nodes[i]];
+    }
+    PatchOptimiser po(m, x, sliding, patch, tab, opt, worst);
     PatchOutcome& o = outcome[k];
     double E = o.energy_before = po.total_energy();
     while (o.sweeps < opt.max_sweeps) {
@@ -301,7 +389,10 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     if (o.accepted) {
       for (std::size_t j = 0; j < patch.elements.size(); ++j) ratio(patch.elements[j]) = after[j];
     } else {
-      for (int i = 0; i < start.cols(); ++i) x.col(patch.free_nodes[i]) = start.col(i);
+      for (int i = 0; i < start.cols(); ++i) {
+        x.col(patch.free_nodes[i]) = start.col(i);
+        sliding.u[patch.free_nodes[i]] = start_u[i];
+      }
     }
   }
 
@@ -311,6 +402,11 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     if (!o.accepted) continue;
     ++res.accepted;
     res.moved_nodes += static_cast<int>(patches[k].free_nodes.size());
+    for (int i : patches[k].free_nodes) {
+      if (sliding.tag[i] < 0) continue;
+      ++res.sliding_nodes;
+      res.mesh.node_class[i].u = wrap_parameter(sliding.range[i], sliding.u[i]);
+    }
     res.energy_before += o.energy_before;
     res.energy_after += o.energy_after;
   }

@@ -25,14 +25,19 @@
 //    back where they were.
 // Patches are independent and optimised in parallel (OpenMP).
 //
-// Boundary nodes: in this first version every node on a model point or curve
-// is held (pass them in `fixed`); sliding along the CAD curve by parameter
-// (Toulorge et al. Sec 3.3, Turner et al. Sec 5) is a follow-up. Elements not
-// certified valid are never repaired (no untangling): their nodes are held,
-// the patches round them are optimised as usual.
+// Boundary nodes: nodes on model points are held; nodes on a curve slide along
+// it by parameter where a CurveEvaluator is given and says the curve slides
+// (Toulorge et al. Sec 3.3, Turner et al. Sec 5): a node's move is a Newton
+// step in u on the energy of x = C(u), dE/du = dE/dx . C'(u), the second
+// derivative by differences of that, backtracked and certified as above, so
+// a sliding node is at C(u) exactly (its classification's u updated). Other
+// boundary nodes are held. Elements not certified valid are never repaired
+// (no untangling): their nodes are held, the patches round them are optimised
+// as usual.
 #include <vector>
 
 #include "core/mesh.h"
+#include "curving/curve_evaluator.h"
 #include "curving/distortion_energy.h"
 #include "quality/jacobian_bounds.h"
 
@@ -52,6 +57,12 @@ struct OptimiseOptions {
   /// holds them by default (boundary-layer heights kept exactly); only the
   /// nodes the order raising added move. true: interior vertices move too.
   bool free_vertices = false;
+  /// Which boundary nodes slide along their curve (with a CurveEvaluator):
+  /// none; the nodes the order raising added (edge_nodes); those and the
+  /// linear mesh's vertices on curves (all: a wall vertex may slide even where
+  /// free_vertices holds the interior ones).
+  enum class Slide { none, edge_nodes, all };
+  Slide slide = Slide::all;
   /// Target of W = J * inv(J_target): the thesis' ideal equilateral element
   /// (ideal) or each element's own straight-sided shape at the start (straight).
   /// straight by default: against the ideal, a boundary-layer element of aspect
@@ -80,14 +91,17 @@ struct OptimiseResult {
   int accepted = 0;          ///< patches kept (the others were reverted or skipped)
   int sweeps = 0;            ///< node-by-node sweeps over all patches
   int moved_nodes = 0;       ///< free nodes of the kept patches
+  int sliding_nodes = 0;     ///< of which on a curve, sliding along it
   double energy_before = 0;  ///< summed energy of the kept patches, before and after
   double energy_after = 0;
 };
 
 /// Optimises m (any order p >= 2, counter-clockwise elements) with the nodes
-/// where fixed[i] (#nodes) held. Throws homesh::Error on a wrong `fixed` size
-/// or bad options.
+/// where fixed[i] (#nodes) held, and the boundary nodes on curves that
+/// `curves` slides (none if null) sliding as opt.slide says. Throws
+/// homesh::Error on a wrong `fixed` size or bad options.
 OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
-                             const OptimiseOptions& opt = {});
+                             const OptimiseOptions& opt = {},
+                             const CurveEvaluator* curves = nullptr);
 
 }  // namespace homesh

@@ -15,14 +15,16 @@ const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
 
 // The main job's mesh (scripts/naca7526.sh) at p = 3: curve leaves no element below the
 // default threshold 0.8 (worst 0.9918), so the stage is asked for 0.999: one patch of
-// 435 poor elements, worst 0.9918 -> 0.9936 (measured, 2 s on 2 busy cores).
+// 435 poor elements, worst 0.9918 -> 0.9936 with the wall nodes held (measured, 2 s on 2 busy
+// cores; sliding along the aerofoil, the default, lowers the patch's summed distortion further
+// but leaves the worst at 0.9920: near 1 the energy and the worst element part ways).
 TEST_CASE("optimise: NACA-7526 with boundary layers at p = 3, worst element better", "[app]") {
   const std::string out = "/tmp/homesh_optimise_naca.msh";
   const auto r = run_homesh(
       geo +
       "naca.geo -m mesh "
       "-m layers:walls=aerofoil:n=15:first=1e-3:ratio=1.2:normals=multi:fan=5:fan_angle=320 "
-      "-m curve:p=3 -m optimise:threshold=0.999 -m quality " +
+      "-m curve:p=3 -m optimise:threshold=0.999:slide=none -m quality " +
       out);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
@@ -31,7 +33,8 @@ TEST_CASE("optimise: NACA-7526 with boundary layers at p = 3, worst element bett
       r.output, m,
       std::regex(
           R"(optimise: (\d+) patches around (\d+) elements below minJ/maxJ \S+, (\d+) kept, )"
-          R"(\d+ sweeps: worst minJ/maxJ (\d\.\d+) -> (\d\.\d+), (\d+) below, (\S+) s)")));
+          R"(\d+ sweeps: worst minJ/maxJ (\d\.\d+) -> (\d\.\d+), (\d+) below, (\d+) nodes sliding )"
+          R"(on curves, (\S+) s)")));
   const int patches = std::stoi(m[1]), kept = std::stoi(m[3]);
   const double before = std::stod(m[4]), after = std::stod(m[5]);
   CHECK(patches > 0);

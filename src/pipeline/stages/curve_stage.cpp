@@ -2,11 +2,15 @@
 
 #include <fmt/core.h>
 
+#include <memory>
+
 #include "core/error.h"
 #include "curving/curve_mesh.h"
 #include "gmsh/cad_boundary.h"
+#include "gmsh/cad_curves.h"
 #include "gmsh/gmsh_call.h"
 #include "pipeline/analogy_options.h"
+#include "pipeline/optimiser_options.h"
 
 namespace homesh {
 namespace {
@@ -36,7 +40,11 @@ Eigen::Matrix2Xd rebuilt_boundary(Context& ctx, const Mesh& raised,
 
 void run(Context& ctx, const CurveOptions& o) {
   Mesh& m = ctx.require_mesh("curve");
-  const CurveResult c = curve_mesh(
+  std::unique_ptr<gmsh_adapter::CadCurves> cad;
+  if (ctx.has_cad)
+    gmsh_adapter::gmsh_call("stage 'curve': reading the CAD curves of " + ctx.input,
+                            [&] { cad = std::make_unique<gmsh_adapter::CadCurves>(m); });
+  CurveResult c = curve_mesh(
       m,
       [&](Mesh& raised) {
         if (!ctx.has_cad) return rebuilt_boundary(ctx, raised, o.boundary);
@@ -45,7 +53,7 @@ void run(Context& ctx, const CurveOptions& o) {
                                 [&] { target = gmsh_adapter::place_on_cad(raised); });
         return target;
       },
-      o);
+      o, cad.get());
   const DeformOptions& d = o.deform;
   if (c.fell_back) {
     const std::string restricted = std::string(o.fixed_vertices ? "vertices held, " : "") +
@@ -57,20 +65,51 @@ void run(Context& ctx, const CurveOptions& o) {
         "solving on the whole mesh with every interior node free",
         restricted, 100 * c.restricted_reached);
   }
+  if (c.freed_vertices)
+    ctx.log.info(
+        "curve: optimised from the solve with the vertices held, elements stayed below {:g}; "
+        "solved again with them free, optimised better from there",
+        o.optimiser.threshold);
   const DeformResult& r = c.deform;
-  if (!r.complete)
+  if (!c.placed && !r.complete)
     throw Error(fmt::format(
         "stage 'curve': the elastic analogy ({}) kept the mesh valid only up to {:.1f} % of "
         "the boundary motion ({} triangles would become invalid); try more increments or "
         "another formulation",
         d.formulation, 100 * r.reached, r.invalid_at_failure));
-  m = r.mesh;
+  if (!c.placed && o.accept_placed <= 1)
+    ctx.log.info("curve: boundary nodes placed, interior straight: {}; solving",
+                 c.placed_worst > 0
+                     ? fmt::format("worst minJ/maxJ {:.4f} < {:g}", c.placed_worst, o.accept_placed)
+                     : std::string("not certified valid"));
+  if (c.placed)
+    ctx.log.info(
+        "curve: order {}, boundary nodes placed, interior straight: worst minJ/maxJ {:.4f} >= "
+        "{:g}, no solve",
+        o.order, c.worst_ratio, o.accept_placed);
+  else
+    ctx.log.info(
+        "curve: order {}, formulation {}, nu {}, posed on {} of {} triangles: {} solves, worst "
+        "minJ/maxJ {:.4f}, {:.2f} s",
+        o.order, d.formulation, d.params.poisson, r.solved_triangles, m.num_triangles(), r.solves,
+        r.worst_ratio, c.elastic_seconds);
+  if (c.optimised) {
+    const OptimiseResult& op = c.optimisation;
+    ctx.log.info(
+        "curve: optimised {} patches round {} elements below {:g} ({} kept, {} nodes sliding on "
+        "curves): worst minJ/maxJ {:.4f} -> {:.4f}, {:.2f} s",
+        op.patches, op.poor_before, o.optimiser.threshold, op.accepted, op.sliding_nodes,
+        op.worst_before, op.worst_after, c.optimise_seconds);
+    ctx.results["optimised_patches"] = op.patches;
+    ctx.results["optimised_accepted"] = op.accepted;
+  }
+  ctx.log.info("curve: worst minJ/maxJ {:.4f}, {:.2f} s", c.worst_ratio, c.seconds);
+  ctx.results["worst"] = c.worst_ratio;
+  ctx.results["placed"] = c.placed;
+  ctx.results["optimised"] = c.optimised;
+  ctx.results["seconds"] = c.seconds;
+  m = std::move(c.mesh);
   ctx.fields.clear();
-  ctx.log.info(
-      "curve: order {}, formulation {}, nu {}, posed on {} of {} triangles: {} solves, worst "
-      "minJ/maxJ {:.4f}",
-      o.order, d.formulation, d.params.poisson, r.solved_triangles, m.num_triangles(), r.solves,
-      r.worst_ratio);
 }
 
 }  // namespace
@@ -86,8 +125,9 @@ Stage curve_stage() {
       "the deformation so far (force_q17, heat_*, metric_*, stiff_*) see only the straight "
       "mesh in one increment: give them 4 or more");
   t.add("vertices", &CurveOptions::fixed_vertices, choice<bool>({{"fixed", true}, {"free", false}}),
-        "fixed: the linear mesh's vertices stay (boundary-layer heights kept exactly), only the "
-        "nodes the order raising adds move; free: every interior node moves (the thesis)");
+        "elastic solve: fixed: the linear mesh's vertices stay (boundary-layer heights kept "
+        "exactly), only the nodes the order raising adds move; free: every interior node moves "
+        "(the thesis); the optimiser moves interior vertices either way");
   t.add(
       "layers", [](CurveOptions& o) -> int& { return o.deform.layers; }, integer(0, 1000),
       "0: no effect; k > 0: solve only on the elements within k element layers of the "
@@ -98,6 +138,12 @@ Stage curve_stage() {
       "0: solve on the whole mesh; r > 0: only on the triangles within r times the size of "
       "the boundary triangles of the moving boundary, the rest held still (a boundary "
       "layer's thin elements do not shrink this region); the whole mesh if that fails");
+  t.add("placed", &CurveOptions::accept_placed, real(0),
+        "keep the mesh with the boundary nodes placed and the interior straight, without a "
+        "solve, if its worst minJ/maxJ is at least this (> 1: always solve)");
+  t.add("optimise", &CurveOptions::optimise, choice<bool>({{"on", true}, {"off", false}}),
+        "after the elastic solve, optimise the patches round elements below the threshold");
+  add_optimiser_options(t, [](CurveOptions& o) -> OptimiseOptions& { return o.optimiser; });
   t.add(
       "corner", [](CurveOptions& o) -> double& { return o.boundary.corner_degrees; },
       real(0, 180, "()"),
@@ -110,7 +156,8 @@ Stage curve_stage() {
   return make_stage<CurveOptions>(
       "curve",
       "order p with boundary nodes on the CAD (or on splines rebuilt from a bare .msh), "
-      "interior by the elastic analogy, valid",
+      "interior straight if that is good enough, else by the elastic analogy, then the "
+      "optimiser round the elements left poor (wall nodes sliding on the CAD), valid",
       t, run);
 }
 

@@ -3,11 +3,14 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <memory>
 
 #include "core/error.h"
 #include "curving/deform_mesh.h"
 #include "curving/optimise_mesh.h"
-#include "pipeline/option_table.h"
+#include "gmsh/cad_curves.h"
+#include "gmsh/gmsh_call.h"
+#include "pipeline/optimiser_options.h"
 
 namespace homesh {
 namespace {
@@ -17,16 +20,20 @@ void run(Context& ctx, const OptimiseOptions& o) {
   if (m.order < 2)
     throw Error("stage 'optimise': the mesh is linear; curve it (or raise its order) first");
   const auto start = std::chrono::steady_clock::now();
-  OptimiseResult r = optimise_mesh(m, boundary_nodes(m), o);
+  std::unique_ptr<gmsh_adapter::CadCurves> cad;
+  if (ctx.has_cad)
+    gmsh_adapter::gmsh_call("stage 'optimise': reading the CAD curves of " + ctx.input,
+                            [&] { cad = std::make_unique<gmsh_adapter::CadCurves>(m); });
+  OptimiseResult r = optimise_mesh(m, std::vector<bool>(m.num_nodes(), false), o, cad.get());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   m = std::move(r.mesh);
   ctx.fields.clear();
   ctx.log.info(
       "optimise: {} patches around {} elements below minJ/maxJ {:g}, {} kept, {} sweeps: worst "
-      "minJ/maxJ {:.4f} -> {:.4f}, {} below, {:.2f} s",
+      "minJ/maxJ {:.4f} -> {:.4f}, {} below, {} nodes sliding on curves, {:.2f} s",
       r.patches, r.poor_before, o.threshold, r.accepted, r.sweeps, r.worst_before, r.worst_after,
-      r.poor_after, seconds);
+      r.poor_after, r.sliding_nodes, seconds);
   if (r.invalid > 0)
     ctx.log.warn("optimise: {} elements not certified valid were left as they are (no untangling)",
                  r.invalid);
@@ -44,12 +51,9 @@ void run(Context& ctx, const OptimiseOptions& o) {
 Stage optimise_stage() {
   // Defaults: OptimiseOptions' own (curving/optimise_mesh.h says why).
   OptionTable<OptimiseOptions> t;
-  t.add("threshold", &OptimiseOptions::threshold, real(0, 1, "(]"),
-        "elements whose certified minJ/maxJ is below this are optimised");
+  add_optimiser_options(t, [](OptimiseOptions& o) -> OptimiseOptions& { return o; });
   t.add("layers", &OptimiseOptions::layers, integer(0, 100),
         "rings of neighbouring elements added round the poor ones to make the patches");
-  t.add("sweeps", &OptimiseOptions::max_sweeps, integer(0, 10000),
-        "most node-by-node Newton sweeps per patch");
   t.add("tolerance", &OptimiseOptions::tolerance, real(0),
         "a sweep lowering the patch's energy by less than this fraction ends the patch");
   t.add("vertices", &OptimiseOptions::free_vertices,
@@ -76,7 +80,7 @@ Stage optimise_stage() {
       "optimise",
       "high-order optimiser: patches round the elements below a minJ/maxJ threshold moved to "
       "lower the thesis' distortion (Eq 3.48), each kept only if certified valid and no worse; "
-      "boundary nodes held",
+      "boundary nodes sliding along their CAD curves",
       t, run);
 }
 

@@ -1,0 +1,31 @@
+#pragma once
+// The optimiser's options the optimise and curve stages share, declared once;
+// defaults are those of the OptimiseOptions each stage fills.
+#include <functional>
+
+#include "curving/optimise_mesh.h"
+#include "pipeline/option_table.h"
+
+namespace homesh {
+
+/// Adds threshold, sweeps and slide to `table`, read into the OptimiseOptions that
+/// `optimiser` gives (a pointer to a data member of T or a callable T& -> OptimiseOptions&).
+template <class T, class Optimiser>
+void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
+  const std::function<OptimiseOptions&(T&)> o = optimiser;
+  table.add(
+      "threshold", [o](T& t) -> double& { return o(t).threshold; }, real(0, 1, "(]"),
+      "elements whose certified minJ/maxJ is below this are optimised");
+  table.add(
+      "sweeps", [o](T& t) -> int& { return o(t).max_sweeps; }, integer(0, 10000),
+      "most node-by-node Newton sweeps per patch");
+  table.add(
+      "slide", [o](T& t) -> OptimiseOptions::Slide& { return o(t).slide; },
+      choice<OptimiseOptions::Slide>({{"all", OptimiseOptions::Slide::all},
+                                      {"nodes", OptimiseOptions::Slide::edge_nodes},
+                                      {"none", OptimiseOptions::Slide::none}}),
+      "boundary nodes sliding along their CAD curve: all (vertices too) | nodes (the nodes the "
+      "order raising added) | none (held); without CAD every boundary node is held");
+}
+
+}  // namespace homesh
