@@ -141,7 +141,7 @@ Stage curve_stage() {
   t.add("placed", &CurveOptions::accept_placed, real(0),
         "keep the mesh with the boundary nodes placed and the interior straight, without a "
         "solve, if its worst minJ/maxJ is at least this (> 1: always solve)");
-  t.add("optimise", &CurveOptions::optimise, choice<bool>({{"on", true}, {"off", false}}),
+  t.add("optimise", &CurveOptions::optimise, boolean(),
         "after the elastic solve, optimise the patches round elements below the threshold");
   add_optimiser_options(t, [](CurveOptions& o) -> OptimiseOptions& { return o.optimiser; });
   t.add(
