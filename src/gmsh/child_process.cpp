@@ -46,6 +46,8 @@ constexpr std::size_t kMaxReason = 4000;  // below a pipe's buffer: the report n
     const rlimit cap{limits.memory, limits.memory};
     setrlimit(RLIMIT_AS, &cap);
   }
+#else
+  (void)limits;
 #endif
   int code = 0;
   std::string message;

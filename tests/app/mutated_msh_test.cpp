@@ -3,7 +3,7 @@
 // flips, numbers replaced by hostile ones, lines dropped or repeated - each
 // run through the CLI: every run ends with exit 0 or homesh's error (exit 1),
 // never a signal or a time-out. HOMESH_MUTANTS sets the count per base file
-// (default 40; a user may ask for 1000); HOMESH_MUTANT_KEEP names a folder
+// (default 16; a user may ask for 1000); HOMESH_MUTANT_KEEP names a folder
 // where a failing mutant is kept.
 #include <catch2/catch.hpp>
 #include <cstdlib>
@@ -88,7 +88,7 @@ std::string mutate(const std::string& base, std::mt19937& rng) {
 TEST_CASE("Mutated .msh files never crash or hang homesh", "[app][robustness]") {
   const TempDir dir;
   const char* env = std::getenv("HOMESH_MUTANTS");
-  const int per_base = env ? std::atoi(env) : 40;
+  const int per_base = env ? std::atoi(env) : 16;
   std::vector<std::string> bases;
   for (const char* flags : {"-format msh22", "-format msh41", "-format msh22 -bin",
                             "-format msh41 -bin", "-format msh41 -order 2"}) {
