@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Builds homesh with clang under AddressSanitizer and UndefinedBehaviorSanitizer,
 # runs the C++ tests there, and runs each libFuzzer target for a bounded time
-# (HOMESH_FUZZ_SECONDS, default 15) from its seed corpus. Any finding fails.
+# (HOMESH_FUZZ_SECONDS, default 10) from its seed corpus. Any finding fails.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HOMESH_ASAN_BUILD_DIR:-$root/build-asan}"
-seconds="${HOMESH_FUZZ_SECONDS:-15}"
+seconds="${HOMESH_FUZZ_SECONDS:-10}"
 flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -gline-tables-only -O1"
 
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -72,6 +72,7 @@ class Reader {
 
  private:
   void bytes(void* p, std::size_t n) {
+    if (n == 0) return;  // an empty vector's data() may be null, which memcpy may not take
     if (n > s_.size() - at_) throw Error("the mesher's child sent a cut mesh");
     std::memcpy(p, s_.data() + at_, n);
     at_ += n;
