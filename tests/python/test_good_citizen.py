@@ -92,14 +92,9 @@ def test_other_extensions_are_refused_with_the_clis_message(plate, tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
-def test_an_invalid_mesh_is_written_only_when_asked(plate, tmp_path):
+def test_an_invalid_mesh_is_written_only_when_asked(plate, tmp_path, fold_a_p2_triangle):
     homesh.order(p=2)
-    # Move a mid-edge node of a triangle beyond its opposite corner: its
-    # corners stay counter-clockwise, but det J changes sign inside.
-    _, nodes = gmsh.model.mesh.getElementsByType(gmsh.model.mesh.getElementType("Triangle", 2))
-    corner = gmsh.model.mesh.getNode(nodes[2])[0]
-    middle = gmsh.model.mesh.getNode(nodes[3])[0]
-    gmsh.model.mesh.setNode(nodes[3], list(corner + 1.5 * (corner - middle)), [])
+    fold_a_p2_triangle()
     out = tmp_path / "bad.msh"
     with pytest.raises(homesh.Error, match="not certified valid"):
         homesh.write(str(out))

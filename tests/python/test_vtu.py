@@ -216,14 +216,10 @@ def test_the_cli_writes_the_same_vtu_as_the_api(model, tmp_path):
                        vtk_to_numpy(by_cli.GetPoints().GetData()), rtol=0, atol=ASCII)
 
 
-def test_an_invalid_mesh_is_written_to_vtu_only_when_asked(model, tmp_path):
+def test_an_invalid_mesh_is_written_to_vtu_only_when_asked(model, tmp_path, fold_a_p2_triangle):
     homesh.mesh()
     homesh.order(p=2)
-    # A mid-edge node moved beyond its opposite corner (test_good_citizen.py).
-    _, nodes = gmsh.model.mesh.getElementsByType(gmsh.model.mesh.getElementType("Triangle", 2))
-    corner = gmsh.model.mesh.getNode(nodes[2])[0]
-    middle = gmsh.model.mesh.getNode(nodes[3])[0]
-    gmsh.model.mesh.setNode(nodes[3], list(corner + 1.5 * (corner - middle)), [])
+    fold_a_p2_triangle()
     out = tmp_path / "bad.vtu"
     with pytest.raises(homesh.Error, match=r"bad\.vtu: not written: \d+ triangles are not certified"):
         homesh.write(str(out))
