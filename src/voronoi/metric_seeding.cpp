@@ -9,52 +9,10 @@
 #include <random>
 #include <vector>
 
+#include "voronoi/point_buckets.h"
+
 namespace homesh {
 namespace {
-
-// Seeds in buckets of a uniform grid, for the neighbour search.
-class Buckets {
- public:
-  Buckets(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double cell)
-      : lo_(lo), cell_(cell) {
-    nx_ = std::max(1, static_cast<int>(std::ceil((hi.x() - lo.x()) / cell)));
-    ny_ = std::max(1, static_cast<int>(std::ceil((hi.y() - lo.y()) / cell)));
-    head_.assign(static_cast<std::size_t>(nx_) * ny_, -1);
-  }
-  void add(const Eigen::Vector2d& p) {
-    points_.push_back(p);
-    const int b = bucket(p);
-    next_.push_back(head_[b]);
-    head_[b] = static_cast<int>(points_.size()) - 1;
-  }
-  // Calls f(point) for the points within Euclidean distance r of p (and some more).
-  template <class F>
-  bool all_of_near(const Eigen::Vector2d& p, double r, F&& f) const {
-    const int i0 = clamp_x(std::floor((p.x() - r - lo_.x()) / cell_));
-    const int i1 = clamp_x(std::floor((p.x() + r - lo_.x()) / cell_));
-    const int j0 = clamp_y(std::floor((p.y() - r - lo_.y()) / cell_));
-    const int j1 = clamp_y(std::floor((p.y() + r - lo_.y()) / cell_));
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i)
-        for (int k = head_[i + nx_ * j]; k >= 0; k = next_[k])
-          if (!f(points_[k])) return false;
-    return true;
-  }
-  const std::vector<Eigen::Vector2d>& points() const { return points_; }
-
- private:
-  int clamp_x(double v) const { return std::clamp(static_cast<int>(v), 0, nx_ - 1); }
-  int clamp_y(double v) const { return std::clamp(static_cast<int>(v), 0, ny_ - 1); }
-  int bucket(const Eigen::Vector2d& p) const {
-    return clamp_x(std::floor((p.x() - lo_.x()) / cell_)) +
-           nx_ * clamp_y(std::floor((p.y() - lo_.y()) / cell_));
-  }
-  Eigen::Vector2d lo_;
-  double cell_;
-  int nx_ = 1, ny_ = 1;
-  std::vector<int> head_, next_;
-  std::vector<Eigen::Vector2d> points_;
-};
 
 constexpr double kFrontLink = 1.6;  // front seeds this close in the metric stay one chain
 constexpr double kCornerMin = 75, kCornerMax = 140;  // corners that get a seed (degrees)
@@ -89,7 +47,7 @@ struct DomainTest {
 
 // Whether q is at least `spacing` (metric length, mean of the two points'
 // metrics, Mq at q) from every point in the buckets.
-bool spaced_from(const Buckets& buckets, const MetricField& metric, const Eigen::Vector2d& q,
+bool spaced_from(const PointBuckets& buckets, const MetricField& metric, const Eigen::Vector2d& q,
                  const Eigen::Matrix2d& Mq, double spacing, double reach) {
   return buckets.all_of_near(q, reach, [&](const Eigen::Vector2d& p) {
     const Eigen::Vector2d v = q - p;
@@ -107,7 +65,8 @@ FrontSeeds metric_front_seeds(const CartesianGrid& g, const Eigen::VectorXd& dom
   const Eigen::Vector2d lo = g.origin;
   const Eigen::Vector2d hi = g.point(g.nx - 1, g.ny - 1);
   const DomainTest test{g, domain};
-  Buckets buckets(lo, hi, std::max(metric.min_speed() * o.front_spacing, 1e-9 * (hi - lo).norm()));
+  PointBuckets buckets(lo, hi,
+                       std::max(metric.min_speed() * o.front_spacing, 1e-9 * (hi - lo).norm()));
   for (Eigen::Index k = 0; k < boundary_seeds.cols(); ++k) buckets.add(boundary_seeds.col(k));
   const double equilateral = std::sqrt(3.0) / 2;
   // Keeps q if its metric ball of radius gap lies in the domain and it is
@@ -241,7 +200,7 @@ Eigen::Matrix2Xd metric_interior_seeds(const CartesianGrid& g, const Eigen::Vect
   // searched within spacing (1 + annulus) times twice the local largest
   // semi-axis (a graded metric changes by less than 2 over that distance).
   double h_min = metric.min_speed();
-  Buckets buckets(lo, hi, std::max(h_min * o.spacing, 1e-9 * (hi - lo).norm()));
+  PointBuckets buckets(lo, hi, std::max(h_min * o.spacing, 1e-9 * (hi - lo).norm()));
   std::vector<Eigen::Vector2d> active;
   for (int k = 0; k < boundary_seeds.cols(); ++k) {
     buckets.add(boundary_seeds.col(k));
