@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -462,7 +464,9 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
                 std::to_string(CrystalEntry::kMaxCrystals));
   if (problem.contact == Contact::wet)
     throw Error("voronoi: the fast_marching engine meets the boundary dry only (use level_set)");
-  const StencilField field(problem);
+  std::optional<StencilField> own;
+  if (!(problem.stencils && problem.stencils->built_for(problem))) own.emplace(problem);
+  const StencilField& field = own ? *own : *problem.stencils;
   std::vector<Eigen::Matrix2d> M(S);
   for (int s = 0; s < S; ++s) {
     const Eigen::Vector2d p = problem.seeds.col(s);
@@ -498,6 +502,12 @@ CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
   out.collisions = std::move(contacts.collisions);
   out.boundary_contacts = std::move(contacts.boundary_contacts);
   return out;
+}
+
+void share_stencils(VoronoiProblem& problem, const std::string& engine) {
+  if (engine != "fast_marching" || (problem.stencils && problem.stencils->built_for(problem)))
+    return;
+  problem.stencils = std::make_shared<const StencilField>(problem);
 }
 
 }  // namespace homesh

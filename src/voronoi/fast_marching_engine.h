@@ -58,4 +58,11 @@ constexpr int kOwnTimeBand = 1;
 CrystalPartition grow_crystals_fast_marching(const VoronoiProblem& problem,
                                              const VoronoiOptions& options);
 
+/// For several growths of `problem` with other seeds by `engine`: if it is
+/// fast_marching, its stencils built once into problem.stencils (unless
+/// already built for it). Building them is a sweep of the grid with a
+/// lattice basis reduction at every node, 9 % of the voronoi stage when
+/// Lloyd's iteration rebuilt them at every step.
+void share_stencils(VoronoiProblem& problem, const std::string& engine);
+
 }  // namespace homesh

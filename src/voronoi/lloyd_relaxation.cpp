@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/progress.h"
+#include "voronoi/fast_marching_engine.h"
 #include "voronoi/voronoi_engines.h"
 
 namespace homesh {
@@ -46,6 +47,7 @@ Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed, const std::
   const double clearance = options.clearance_cells * g.ds();
   const int S = static_cast<int>(problem.seeds.cols());
   Progress progress("iteration", options.iterations);
+  share_stencils(problem, engine);
   for (int it = 0; it < options.iterations && fixed < S; ++it) {
     progress.update(it + 1);
     const CrystalPartition p = grow_crystals(problem, engine);

@@ -30,6 +30,12 @@ Eigen::Matrix2d metric_from_axes(double theta, double h1, double h2) {
 double metric_max_speed(const Eigen::Matrix2d& M) { return 1.0 / std::sqrt(eigenvalues(M)(0)); }
 double metric_min_speed(const Eigen::Matrix2d& M) { return 1.0 / std::sqrt(eigenvalues(M)(1)); }
 
+bool MetricField::operator==(const MetricField& o) const {
+  const CartesianGrid &a = coarse_, &b = o.coarse_;
+  return a.origin == b.origin && a.dx == b.dx && a.dy == b.dy && a.nx == b.nx && a.ny == b.ny &&
+         M_ == o.M_;
+}
+
 MetricField::MetricField(const CartesianGrid& coarse, std::vector<Eigen::Matrix2d> M)
     : coarse_(coarse), M_(std::move(M)) {
   if (static_cast<int>(M_.size()) != coarse_.node_count())

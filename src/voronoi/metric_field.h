@@ -77,6 +77,8 @@ class MetricField {
   double min_speed() const { return min_speed_; }
   /// The same tensor at every coarse node.
   bool uniform() const { return uniform_; }
+  /// The same tensors on the same grid.
+  bool operator==(const MetricField& o) const;
 
  private:
   CartesianGrid coarse_;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "voronoi/fast_marching_engine.h"
+
 namespace homesh {
 
 Eigen::Matrix2Xd dual_faults(const Eigen::Matrix2Xd& seeds, const VoronoiDelaunay& v) {
@@ -20,6 +22,7 @@ RefinedDual refine_dual(VoronoiProblem problem, const std::string& engine,
   RefinedDual out;
   const CartesianGrid& g = problem.grid;
   const double clearance = refine.clearance_cells * g.ds();
+  if (refine.max_rounds > 0) share_stencils(problem, engine);
   for (int round = 0;; ++round) {
     out.result = voronoi_delaunay(problem, engine, options);
     if (out.ok() || round == refine.max_rounds) break;

@@ -11,6 +11,14 @@
 
 namespace homesh {
 
+bool StencilField::built_for(const VoronoiProblem& p) const {
+  const CartesianGrid& g = p.grid;
+  return g.origin == grid_.origin && g.dx == grid_.dx && g.dy == grid_.dy && g.nx == grid_.nx &&
+         g.ny == grid_.ny && p.domain.size() == domain_.size() &&
+         (p.domain.data() == domain_.data() || p.domain == domain_) && p.metric == metric_ &&
+         p.seed_metrics == seed_metrics_;
+}
+
 StencilField::StencilField(const VoronoiProblem& problem)
     : grid_(problem.grid),
       domain_(problem.domain),

@@ -25,6 +25,9 @@ class StencilField {
  public:
   /// Throws homesh::Error if the domain or seed_metrics have the wrong size.
   explicit StencilField(const VoronoiProblem& problem);
+  /// Whether these are the stencils of `problem`: the same grid, domain,
+  /// metric and seed metrics (the seeds themselves do not matter).
+  bool built_for(const VoronoiProblem& problem) const;
 
   const CartesianGrid& grid() const { return grid_; }
   bool has_domain() const { return domain_.size() > 0; }

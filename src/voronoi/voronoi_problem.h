@@ -4,12 +4,15 @@
 // grid node and the pairs of crystals that collided out.
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "voronoi/cartesian_grid.h"
 #include "voronoi/metric_field.h"
 
 namespace homesh {
+
+class StencilField;
 
 /// How a crystal meets the domain boundary (Section 2.6).
 enum class Contact {
@@ -46,6 +49,11 @@ struct VoronoiProblem {
   /// crystals through.
   Eigen::VectorXd domain;
   Contact contact = Contact::dry;
+  /// Optional: the fast-marching engine's stencils, built once for several
+  /// growths on the same grid, domain and metric with other seeds (Lloyd's
+  /// iteration, refinement rounds: share_stencils in fast_marching_engine.h).
+  /// The engine uses them only if built for this problem, else its own.
+  std::shared_ptr<const StencilField> stencils;
 };
 
 /// Throws homesh::Error unless problem.domain is empty or holds one value

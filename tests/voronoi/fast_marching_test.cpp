@@ -7,9 +7,11 @@
 #include <vector>
 
 #include "core/error.h"
+#include "voronoi/fast_marching_engine.h"
 #include "voronoi/label_contacts.h"
 #include "voronoi/lattice_stencil.h"
 #include "voronoi/morton_order.h"
+#include "voronoi/stencil_field.h"
 #include "voronoi/voronoi_delaunay.h"
 #include "voronoi/voronoi_engines.h"
 #include "voronoi_test_support.h"
@@ -297,6 +299,51 @@ TEST_CASE("fast marching in a disc and an annulus: geodesic regions, valid duals
     CHECK(crossed == 0);
     CHECK(r.collisions == std::vector<std::array<int, 2>>{{0, 1}});
   }
+}
+
+TEST_CASE("fast marching on shared stencils: the same labels, and none for another problem",
+          "[voronoi][fmm]") {
+  // A graded metric in an annulus (stencils per node), grown once with its own
+  // stencils and again with them shared, with the seeds moved as Lloyd moves them.
+  const int n = 121;
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({-1, -1}, {1, 1}, n, n);
+  p.domain = sample_on_grid(
+      p.grid, [](const Eigen::Vector2d& x) { return std::abs(x.norm() - 0.6) - 0.3; });
+  const CartesianGrid coarse = CartesianGrid::spanning({-1, -1}, {1, 1}, 5, 5);
+  std::vector<Eigen::Matrix2d> M(25);
+  for (int k = 0; k < 25; ++k) M[k] = Eigen::Vector2d(1.0 + k, 4.0 + 0.5 * k).asDiagonal();
+  p.metric = MetricField(coarse, M);
+  p.seeds.resize(2, 12);
+  for (int k = 0; k < 12; ++k)
+    p.seeds.col(k) = (k % 2 ? 0.45 : 0.75) *
+                     Eigen::Vector2d(std::cos(2 * M_PI * k / 12), std::sin(2 * M_PI * k / 12));
+  const CrystalPartition own = grow_crystals(p, "fast_marching");
+  VoronoiProblem shared = p;
+  share_stencils(shared, "fast_marching");
+  REQUIRE(shared.stencils);
+  CHECK(shared.stencils->built_for(p));
+  const std::shared_ptr<const StencilField> built = shared.stencils;
+  share_stencils(shared, "fast_marching");  // built for it already: kept
+  CHECK(shared.stencils == built);
+  CHECK(grow_crystals(shared, "fast_marching").labels == own.labels);
+  shared.seeds.col(3) += Eigen::Vector2d(0.03, -0.02);
+  p.seeds = shared.seeds;
+  CHECK(grow_crystals(shared, "fast_marching").labels == grow_crystals(p, "fast_marching").labels);
+  // Another domain, metric or grid: the stencils are not those of the problem.
+  VoronoiProblem other = shared;
+  other.domain(other.domain.size() / 2) += 0.1;
+  CHECK_FALSE(built->built_for(other));
+  other = shared;
+  other.metric = MetricField::constant(Eigen::Matrix2d::Identity());
+  CHECK_FALSE(built->built_for(other));
+  other = shared;
+  other.grid.dx *= 1.0 + 1e-12;
+  CHECK_FALSE(built->built_for(other));
+  // The level-set engine has no stencils to share.
+  VoronoiProblem level_set = p;
+  share_stencils(level_set, "level_set");
+  CHECK_FALSE(level_set.stencils);
 }
 
 TEST_CASE("fast marching refuses what it cannot do", "[voronoi][fmm]") {
