@@ -3,8 +3,10 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "core/progress.h"
 #include "voronoi/fast_marching_engine.h"
 #include "voronoi/voronoi_engines.h"
@@ -42,10 +44,13 @@ Eigen::Matrix2Xd region_centroids(const CartesianGrid& g, const Eigen::VectorXi&
 }
 
 Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed, const std::string& engine,
-                                  const LloydOptions& options) {
+                                  const LloydOptions& options, const std::vector<char>& held) {
   const CartesianGrid& g = problem.grid;
   const double clearance = options.clearance_cells * g.ds();
   const int S = static_cast<int>(problem.seeds.cols());
+  if (!held.empty() && static_cast<int>(held.size()) != S)
+    throw Error("voronoi: " + std::to_string(held.size()) + " held flags for " + std::to_string(S) +
+                " seeds");
   Progress progress("iteration", options.iterations);
   share_stencils(problem, engine);
   for (int it = 0; it < options.iterations && fixed < S; ++it) {
@@ -54,6 +59,7 @@ Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed, const std::
     const Eigen::Matrix2Xd z =
         region_centroids(g, p.labels, S, problem.metric, problem.seed_metrics);
     for (int s = fixed; s < S; ++s) {
+      if (!held.empty() && held[s]) continue;
       const Eigen::Vector2d c = z.col(s);
       if (!c.allFinite()) continue;
       if (problem.domain.size() > 0 && bilinear_at(g, problem.domain, c) > -clearance) continue;

@@ -38,11 +38,15 @@ struct LloydOptions {
   double clearance_cells = 2.0;
 };
 
-/// Seeds 0..fixed-1 of `problem` (the boundary seeds) stay; the others move
-/// to region_centroids of the crystals grown by `engine`, options.iterations
-/// times. Returns all the seeds (2 by S, in the problem's order).
+/// Seeds 0..fixed-1 of `problem` (the boundary seeds) stay, and so does
+/// every seed s with held[s] != 0 (held empty or one flag per seed, e.g. the
+/// seeds too close together for the grid to give their regions' centroids);
+/// the others move to region_centroids of the crystals grown by `engine`,
+/// options.iterations times. Returns all the seeds (2 by S, in the
+/// problem's order).
 Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed,
                                   const std::string& engine = "fast_marching",
-                                  const LloydOptions& options = {});
+                                  const LloydOptions& options = {},
+                                  const std::vector<char>& held = {});
 
 }  // namespace homesh

@@ -43,6 +43,12 @@ class PointBuckets {
   /// some farther ones) while f returns true; false if some call did not.
   template <class F>
   bool all_of_near(const Eigen::Vector2d& p, double r, F&& f) const {
+    return all_of_near_index(p, r, [&](int k) { return f(points_[k]); });
+  }
+
+  /// The same with f(k), k the point's place in the order of add.
+  template <class F>
+  bool all_of_near_index(const Eigen::Vector2d& p, double r, F&& f) const {
     // The finest level whose cells are at least r / 2 wide: at most 5 x 5 cells.
     std::size_t k = 0;
     while (k + 1 < levels_.size() && levels_[k].cell < 0.5 * r) ++k;
@@ -54,7 +60,7 @@ class PointBuckets {
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i)
         for (int q = l.head[i + l.nx * j]; q >= 0; q = l.next[q])
-          if (!f(points_[q])) return false;
+          if (!f(q)) return false;
     return true;
   }
 

@@ -26,6 +26,26 @@ constexpr double kCellsPerSize = 6.0;  // automatic grid: smallest size over thi
 constexpr int kGridMin = 200, kGridMax = 1500;
 constexpr double kBandCells = 8.0;   // the domain's distance is exact this many cells out
 constexpr int kLloydCoarsening = 2;  // Lloyd's iteration on a grid this many times coarser
+// Automatic growth grid: sized for all but this share of the seeds (by the
+// metric's smallest size at them), windows round the finer ones
+// (window_regrowth.h); the seeding grid alone is sized for the finest.
+constexpr double kFineShare = 0.5;
+constexpr double kFineGain = 0.8;  // ... if that grid has at most this times the nodes per side
+
+// The metric's smallest size (semi-axis) at each seed.
+std::vector<double> seed_sizes(const MetricField& metric, const Eigen::Matrix2Xd& seeds) {
+  std::vector<double> h(seeds.cols());
+  for (Eigen::Index s = 0; s < seeds.cols(); ++s)
+    h[s] = metric_min_speed(metric.metric_at(seeds.col(s)));
+  return h;
+}
+
+// The q-quantile of values (0 <= q <= 1).
+double quantile(std::vector<double> values, double q) {
+  const std::size_t k = static_cast<std::size_t>(q * (values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + k, values.end());
+  return values[k];
+}
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -91,6 +111,62 @@ SurfaceLoops surface_loops(const SeededBoundary& b, const SurfaceBoundary& s) {
     out.hi = out.hi.cwiseMax(p.rowwise().maxCoeff());
   }
   return out;
+}
+
+// Lloyd's iteration on the seeds `free` of problem p (its metric and seeds)
+// in windows round their clusters, as window_regrowth.h places them, each on
+// a grid of kCellsPerSize cells per smallest size there, no finer than
+// min_ds; the other seeds in a window stay. Returns all the seeds.
+Eigen::Matrix2Xd lloyd_in_windows(const VoronoiProblem& p, const std::vector<int>& free,
+                                  const SurfaceLoops& loops, double min_ds,
+                                  const std::string& engine, const LloydOptions& lloyd) {
+  const WindowOptions w;
+  Eigen::Matrix2Xd seeds = p.seeds;
+  std::vector<Eigen::Vector2d> points;
+  std::vector<double> size, smallest;
+  for (const int s : free) {
+    const Eigen::Matrix2d M = p.metric.metric_at(seeds.col(s));
+    points.push_back(seeds.col(s));
+    size.push_back(metric_max_speed(M));
+    smallest.push_back(metric_min_speed(M));
+  }
+  for (const std::vector<int>& members : cluster_spots(points, size, 2 * w.pad)) {
+    Eigen::Vector2d lo = points[members[0]], hi = lo;
+    double h_min = smallest[members[0]], h_max = size[members[0]];
+    for (const int k : members) {
+      lo = lo.cwiseMin(points[k]);
+      hi = hi.cwiseMax(points[k]);
+      h_min = std::min(h_min, smallest[k]);
+      h_max = std::max(h_max, size[k]);
+    }
+    // The window: the seeds' box grown by 2 pads of the largest size, so
+    // that the regions of the seeds that move lie in it.
+    lo.array() -= 2 * w.pad * h_max;
+    hi.array() += 2 * w.pad * h_max;
+    const double extent = (hi - lo).maxCoeff();
+    const double ds = std::max({h_min / kCellsPerSize, min_ds, extent / (w.max_nodes - 1)});
+    VoronoiProblem win;
+    win.metric = p.metric;
+    win.grid.origin = lo;
+    win.grid.dx = win.grid.dy = ds;
+    win.grid.nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / ds)) + 1;
+    win.grid.ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / ds)) + 1;
+    win.domain = loop_signed_distance(win.grid, loops.polygons, kBandCells * ds);
+    std::vector<int> local;
+    std::vector<char> held;
+    std::vector<char> moves(seeds.cols(), 0);
+    for (const int k : members) moves[free[k]] = 1;
+    for (Eigen::Index s = 0; s < seeds.cols(); ++s) {
+      const Eigen::Vector2d x = seeds.col(s);
+      if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
+      local.push_back(static_cast<int>(s));
+      held.push_back(moves[s] ? 0 : 1);
+    }
+    win.seeds = seeds(Eigen::all, local);
+    const Eigen::Matrix2Xd moved = lloyd_relaxation(win, 0, engine, lloyd, held);
+    for (std::size_t k = 0; k < local.size(); ++k) seeds.col(local[k]) = moved.col(k);
+  }
+  return seeds;
 }
 
 // Interior seeds from a file: those inside this surface's polygons, each
@@ -167,17 +243,38 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
           : file_seeds(o.seed_path, *o.seed_list, loops, p.grid, p.domain, bseeds, list_used);
   p.seeds.resize(2, held.cols() + interior.cols());
   p.seeds << held, interior;
+  // The growth grid: with o.fine_windows, sized for all but the finest
+  // kFineShare of the seeds, which get windows of their own below.
+  const std::vector<double> h_seed = seed_sizes(metric, p.seeds);
+  int n_growth = n;
+  if (o.grid == 0 && o.fine_windows && !h_seed.empty()) {
+    const int n_share = std::clamp(
+        static_cast<int>(std::ceil(extent / (quantile(h_seed, kFineShare) / kCellsPerSize))),
+        kGridMin, kGridMax);
+    if (n_share <= kFineGain * n) n_growth = n_share;
+  }
+  const CartesianGrid growth_grid = CartesianGrid::covering(loops.lo, loops.hi, n_growth, 3);
   Progress phase("phase", 3);
   if (auto_seeds && o.lloyd.iterations > 0) {
     phase.update(0, "Lloyd's iteration on the seeds");
     // On a grid kLloydCoarsening times coarser: a centroid needs far fewer
-    // cells per region than a dual triangle does.
+    // cells per region than a dual triangle does. Seeds finer than that grid
+    // resolves stay (rows from the walls, where they are Lloyd's fixed points).
     VoronoiProblem coarse = p;
-    coarse.grid =
-        CartesianGrid::covering(loops.lo, loops.hi, std::max(kGridMin, n / kLloydCoarsening), 3);
+    coarse.grid = CartesianGrid::covering(loops.lo, loops.hi,
+                                          std::max(kGridMin, n_growth / kLloydCoarsening), 3);
     coarse.domain =
         loop_signed_distance(coarse.grid, loops.polygons, kBandCells * coarse.grid.ds());
-    p.seeds = lloyd_relaxation(coarse, static_cast<int>(hold), o.engine, o.lloyd);
+    std::vector<char> held_fine(p.seeds.cols(), 0);
+    if (n_growth < n)
+      for (std::size_t s = 0; s < h_seed.size(); ++s)
+        held_fine[s] = h_seed[s] < kCellsPerSize * coarse.grid.ds();
+    p.seeds = lloyd_relaxation(coarse, static_cast<int>(hold), o.engine, o.lloyd, held_fine);
+    std::vector<int> fine_free;
+    for (Eigen::Index s = hold; s < p.seeds.cols(); ++s)
+      if (held_fine[s]) fine_free.push_back(static_cast<int>(s));
+    p.seeds =
+        lloyd_in_windows(p, fine_free, loops, kLloydCoarsening * p.grid.ds(), o.engine, o.lloyd);
   }
   // Automatic seeds inside a boundary segment's diametral circle go: that
   // segment could be in no dual.
@@ -200,8 +297,25 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
 
   phase.update(1, "growing " + std::to_string(p.seeds.cols()) + " crystals");
   const auto growth = Clock::now();
+  // On the growth grid, the seeds it does not resolve are `fine`: no seed is
+  // added near them (the faults there are the grid's), windows grow them.
+  std::vector<int> fine;
   RefineOptions refine;
   refine.segments = segments;
+  const double seeding_ds = p.grid.ds();
+  if (n_growth < n) {
+    p.grid = growth_grid;
+    p.domain = loop_signed_distance(p.grid, loops.polygons, kBandCells * p.grid.ds());
+    const double resolved = kCellsPerSize * p.grid.ds();
+    for (Eigen::Index s = 0; s < p.seeds.cols(); ++s)
+      if (metric_min_speed(metric.metric_at(p.seeds.col(s))) < resolved)
+        fine.push_back(static_cast<int>(s));
+    refine.allowed = [&metric, resolved](const Eigen::Vector2d& x) {
+      return metric_min_speed(metric.metric_at(x)) >= 1.5 * resolved;
+    };
+  }
+  rep.fine_seeds = static_cast<long>(fine.size());
+  rep.grid = p.grid;
   const RefinedDual r = refine_dual(p, o.engine, {}, refine);
   rep.growth_seconds = seconds_since(growth);
   rep.dual_size = static_cast<long>(r.result.dual.triangles.size());
@@ -210,17 +324,34 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   for (const int a : r.added) rep.refined_seeds += a;
   // Where the dual misses the boundary, a finer grid round the spot.
   p.seeds = r.seeds;
-  phase.update(2, "regrowing where the dual missed the boundary");
-  const RegrownDual w = regrow_windows(
-      p, r.result.dual.triangles, r.result.dual.vertices, segments,
-      [&](const CartesianGrid& g) {
-        return loop_signed_distance(g, loops.polygons, kBandCells * g.ds());
-      },
-      o.engine);
+  phase.update(2, "regrowing where the grid is too coarse for the seeds");
+  const auto domain_on = [&](const CartesianGrid& g) {
+    return loop_signed_distance(g, loops.polygons, kBandCells * g.ds());
+  };
+  RegrownDual w;
+  rep.missed_segments =
+      static_cast<long>(missed_segments(segments, r.result.dual.triangles).size());
+  if (fine.empty()) {
+    w = regrow_windows(p, r.result.dual.triangles, r.result.dual.vertices, segments, domain_on,
+                       o.engine);
+  } else {
+    // Windows round the fine seeds, then round the segments still missed.
+    // No finer than the seeding grid, sized for the finest seed (and capped).
+    WindowOptions finest;
+    finest.min_ds = seeding_ds;
+    const RegrownDual f = regrow_windows(p, r.result.dual.triangles, r.result.dual.vertices,
+                                         segments, domain_on, o.engine, finest, fine);
+    VoronoiProblem merged = p;
+    merged.seeds = f.seeds;
+    w = regrow_windows(merged, f.triangles, f.vertices, segments, domain_on, o.engine);
+    w.windows += f.windows;
+    w.window_nodes = std::max(w.window_nodes, f.window_nodes);
+    w.finer_windows += f.finer_windows;
+    rep.fine_windows = f.windows;
+    rep.missed_segments = static_cast<long>(missed_segments(segments, f.triangles).size());
+  }
   rep.windows = w.windows;
   if (w.windows > 0) {
-    rep.missed_segments =
-        static_cast<long>(missed_segments(segments, r.result.dual.triangles).size());
     rep.window_nodes = w.window_nodes;
     rep.finer_windows = w.finer_windows;
     rep.regrown_seeds = w.seeds.cols() - r.seeds.cols();

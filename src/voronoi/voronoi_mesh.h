@@ -26,6 +26,11 @@ struct VoronoiMeshOptions {
   int smooth = 3;                        ///< smoothing sweeps (voronoi/metric_smoothing.h)
   std::string engine = "fast_marching";  ///< a name of voronoi_engines()
   int grid = 0;  ///< grid nodes along a surface's longer side; 0: its smallest size over 6 cells
+  /// With grid = 0: the crystals grow on a grid sized for all but the finer
+  /// half of the seeds, and again on finer grids in windows round those
+  /// (window_regrowth.h), where one grid for the finest spot of a far field
+  /// costs (largest / smallest size)^2 times the nodes.
+  bool fine_windows = true;
   /// Interior seeds from a file instead of the automatic ones (path: for
   /// messages); every seed must lie in some surface.
   const SeedList* seed_list = nullptr;
@@ -35,7 +40,9 @@ struct VoronoiMeshOptions {
 /// What the mesher did on one surface.
 struct VoronoiSurfaceReport {
   int tag = -1;
-  CartesianGrid grid;
+  CartesianGrid grid;    ///< of the growth (seeding: finer if fine_seeds > 0)
+  long fine_seeds = 0;   ///< seeds finer than the growth grid resolves, grown in windows
+  int fine_windows = 0;  ///< windows round them (of `windows`)
   long boundary_seeds = 0, front_seeds = 0, interior_seeds = 0;
   long encroaching_dropped = 0;  ///< automatic seeds in a boundary segment's diametral circle
   double seeding_seconds = 0, growth_seconds = 0;

@@ -7,6 +7,7 @@
 #include <set>
 #include <utility>
 
+#include "voronoi/point_buckets.h"
 #include "voronoi/refine_dual.h"
 
 namespace homesh {
@@ -133,6 +134,36 @@ Merge grow_window(const VoronoiProblem& problem, const RegrownDual& at,
 
 }  // namespace
 
+std::vector<std::vector<int>> cluster_spots(const std::vector<Eigen::Vector2d>& points,
+                                            const std::vector<double>& sizes, double reach) {
+  const int m = static_cast<int>(points.size());
+  std::vector<int> parent(m);
+  std::iota(parent.begin(), parent.end(), 0);
+  if (m > 0) {
+    Eigen::Vector2d lo = points[0], hi = lo;
+    double largest = 0;
+    for (int k = 0; k < m; ++k) {
+      lo = lo.cwiseMin(points[k]);
+      hi = hi.cwiseMax(points[k]);
+      largest = std::max(largest, sizes[k]);
+    }
+    PointBuckets buckets(lo, hi, std::max(reach * largest, 1e-9 * (hi - lo).norm() + 1e-300));
+    for (int a = 0; a < m; ++a) {
+      buckets.all_of_near_index(points[a], reach * largest, [&](int b) {
+        if ((points[a] - points[b]).norm() <= reach * std::max(sizes[a], sizes[b]))
+          parent[root(parent, a)] = root(parent, b);
+        return true;
+      });
+      buckets.add(points[a]);
+    }
+  }
+  std::vector<std::vector<int>> members(m), out;
+  for (int k = 0; k < m; ++k) members[root(parent, k)].push_back(k);
+  for (auto& c : members)
+    if (!c.empty()) out.push_back(std::move(c));
+  return out;
+}
+
 std::vector<std::array<int, 2>> missed_segments(const std::vector<std::array<int, 2>>& segments,
                                                 const std::vector<std::array<int, 3>>& triangles) {
   std::set<std::pair<int, int>> edges;
@@ -149,56 +180,70 @@ RegrownDual regrow_windows(const VoronoiProblem& problem,
                            const Eigen::Matrix2Xd& vertices,
                            const std::vector<std::array<int, 2>>& segments,
                            const std::function<Eigen::VectorXd(const CartesianGrid&)>& domain_on,
-                           const std::string& engine, const WindowOptions& o) {
+                           const std::string& engine, const WindowOptions& o,
+                           const std::vector<int>& fine) {
   RegrownDual out;
   out.seeds = problem.seeds;
   out.triangles = triangles;
   std::vector<Eigen::Vector2d> vertex(triangles.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) vertex[f] = vertices.col(f);
-  const std::vector<std::array<int, 2>> missed = missed_segments(segments, triangles);
+  // With fine seeds, their windows alone (the segments still missed then
+  // get windows of their own in another call).
+  const std::vector<std::array<int, 2>> missed =
+      fine.empty() ? missed_segments(segments, triangles) : std::vector<std::array<int, 2>>{};
 
-  // Clusters of missed segments: within 2 pads (in the metric's largest
-  // size there) of each other.
-  const int m = static_cast<int>(missed.size());
-  const auto spacing = [&](int k) {
-    return (problem.seeds.col(missed[k][0]) - problem.seeds.col(missed[k][1])).norm();
+  // Spots: the missed segments (their seed spacing, the metric's largest
+  // size at their middle) and the fine seeds (the metric's smallest and
+  // largest sizes there).
+  struct Spot {
+    Eigen::Vector2d lo, hi, middle;
+    double spacing, size;
+    int segment;  // into missed, or -1
   };
-  std::vector<Eigen::Vector2d> middle(m);
-  std::vector<double> size(m);
-  for (int k = 0; k < m; ++k) {
-    middle[k] = 0.5 * (problem.seeds.col(missed[k][0]) + problem.seeds.col(missed[k][1]));
-    size[k] = metric_max_speed(problem.metric.metric_at(middle[k]));
+  std::vector<Spot> spots;
+  for (std::size_t k = 0; k < missed.size(); ++k) {
+    const Eigen::Vector2d a = problem.seeds.col(missed[k][0]), b = problem.seeds.col(missed[k][1]);
+    const Eigen::Vector2d middle = 0.5 * (a + b);
+    spots.push_back({a.cwiseMin(b), a.cwiseMax(b), middle, (a - b).norm(),
+                     metric_max_speed(problem.metric.metric_at(middle)), static_cast<int>(k)});
   }
-  std::vector<int> parent(m);
-  std::iota(parent.begin(), parent.end(), 0);
-  for (int a = 0; a < m; ++a)
-    for (int b = a + 1; b < m; ++b)
-      if ((middle[a] - middle[b]).norm() <= 2 * o.pad * std::max(size[a], size[b]))
-        parent[root(parent, a)] = root(parent, b);
-
-  for (int c = 0; c < m; ++c) {
-    if (root(parent, c) != c) continue;
-    Box spots{middle[c], middle[c]};
-    double h_min = spacing(c), h_max = size[c];
-    for (int k = 0; k < m; ++k) {
-      if (root(parent, k) != c) continue;
-      for (const int s : missed[k]) {
-        spots.lo = spots.lo.cwiseMin(problem.seeds.col(s));
-        spots.hi = spots.hi.cwiseMax(problem.seeds.col(s));
-      }
-      h_min = std::min(h_min, spacing(k));
-      h_max = std::max(h_max, size[k]);
+  for (const int s : fine) {
+    const Eigen::Vector2d p = problem.seeds.col(s);
+    const Eigen::Matrix2d M = problem.metric.metric_at(p);
+    spots.push_back({p, p, p, metric_min_speed(M), metric_max_speed(M), -1});
+  }
+  std::vector<Eigen::Vector2d> middles;
+  std::vector<double> sizes;
+  for (const Spot& sp : spots) {
+    middles.push_back(sp.middle);
+    sizes.push_back(sp.size);
+  }
+  for (const std::vector<int>& members : cluster_spots(middles, sizes, 2 * o.pad)) {
+    const Spot& first = spots[members.front()];
+    Box box{first.lo, first.hi};
+    double h_min = first.spacing, h_max = first.size;
+    std::vector<std::array<int, 2>> cluster;
+    // A segment missed though the global grid has `cells` cells along it
+    // needs a window `finer` times finer; the other spots, `cells` cells per
+    // spacing.
+    bool resolved_miss = false;
+    for (const int k : members) {
+      resolved_miss = resolved_miss ||
+                      (spots[k].segment >= 0 && spots[k].spacing >= o.cells * problem.grid.ds());
+      box.lo = box.lo.cwiseMin(spots[k].lo);
+      box.hi = box.hi.cwiseMax(spots[k].hi);
+      h_min = std::min(h_min, spots[k].spacing);
+      h_max = std::max(h_max, spots[k].size);
+      if (spots[k].segment >= 0) cluster.push_back(missed[spots[k].segment]);
     }
-    const Box inner = spots.grown(o.pad * h_max), outer = inner.grown(o.pad * h_max);
+    const Box inner = box.grown(o.pad * h_max), outer = inner.grown(o.pad * h_max);
     const double band = std::min(o.seam_cells * problem.grid.ds(), 0.5 * o.pad * h_max);
     const Box core = inner.grown(-0.5 * o.pad * h_max);
     const double extent = (outer.hi - outer.lo).maxCoeff();
-    const double ds_min = extent / (o.max_nodes - 1);
-    double ds = std::max(std::min(h_min / o.cells, problem.grid.ds() / o.finer), ds_min);
+    const double ds_min = std::max(extent / (o.max_nodes - 1), o.min_ds);
+    const double ds_finer = resolved_miss ? problem.grid.ds() / o.finer : h_min / o.cells;
+    double ds = std::max(std::min(h_min / o.cells, ds_finer), ds_min);
     if (ds >= 0.9 * problem.grid.ds()) continue;
-    std::vector<std::array<int, 2>> cluster;
-    for (int k = 0; k < m; ++k)
-      if (root(parent, k) == c) cluster.push_back(missed[k]);
     // The window grown at ds, then twice as fine while it still misses some
     // of the cluster's segments and the node cap allows; the attempt missing
     // the fewest (the finer on a tie) is merged.
@@ -222,6 +267,8 @@ RegrownDual regrow_windows(const VoronoiProblem& problem,
     out.triangles = std::move(best.triangles);
     vertex = std::move(best.vertex);
   }
+  out.vertices.resize(2, static_cast<Eigen::Index>(vertex.size()));
+  for (std::size_t f = 0; f < vertex.size(); ++f) out.vertices.col(f) = vertex[f];
   return out;
 }
 

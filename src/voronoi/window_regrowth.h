@@ -1,7 +1,9 @@
 #pragma once
 // A finer grid where the global one is too coarse for the seeds. Where the
 // crystal dual misses boundary segments (seeds a cell or two apart, as at a
-// sharp trailing edge), the crystals round the spot grow again on a grid over
+// sharp trailing edge), and round seeds known to be finer than the global
+// grid resolves (a global grid sized for most of the domain, not for its
+// finest spot), the crystals round the spot grow again on a grid over
 // a window about it, `cells` cells per local seed spacing and at least
 // `finer` times finer than the global grid, and the window's dual triangles
 // replace the global ones there. A window that still misses some of its
@@ -31,9 +33,12 @@
 namespace homesh {
 
 struct WindowOptions {
-  double cells = 6.0;    ///< window grid cells per shortest missed segment, at least
-  double finer = 4.0;    ///< window grid spacing at most the global one over this
+  double cells = 6.0;  ///< window grid cells per shortest missed segment, at least
+  /// window grid spacing at most the global one over this, where a segment
+  /// with `cells` global cells along it was missed
+  double finer = 4.0;
   int max_nodes = 1200;  ///< window grid nodes along the longer side, at most
+  double min_ds = 0.0;   ///< window grid spacing at least this
   /// Inner box: the missed segments' box grown by this many times the
   /// metric's largest size there (1 / sqrt(lambda_min)); the window's seeds
   /// and grid reach as far again beyond it.
@@ -43,6 +48,12 @@ struct WindowOptions {
   double seam_cells = 3.0;
 };
 
+/// Clusters of points: those within `reach` times the larger of their two
+/// sizes of each other (transitively) share one. The members of each
+/// (indices, ascending), the clusters in the order of their first member.
+std::vector<std::vector<int>> cluster_spots(const std::vector<Eigen::Vector2d>& points,
+                                            const std::vector<double>& sizes, double reach);
+
 /// Boundary segments (seed pairs) that are an edge of no triangle.
 std::vector<std::array<int, 2>> missed_segments(const std::vector<std::array<int, 2>>& segments,
                                                 const std::vector<std::array<int, 3>>& triangles);
@@ -50,6 +61,7 @@ std::vector<std::array<int, 2>> missed_segments(const std::vector<std::array<int
 struct RegrownDual {
   Eigen::Matrix2Xd seeds;                     ///< the input seeds, then those the windows added
   std::vector<std::array<int, 3>> triangles;  ///< the merged dual
+  Eigen::Matrix2Xd vertices;                  ///< their Voronoi vertices (2 by T)
   int windows = 0;                            ///< windows merged
   int window_nodes = 0;                       ///< grid nodes of the largest window (per side)
   int finer_windows = 0;                      ///< regrowths twice as fine (segments still missed)
@@ -59,7 +71,10 @@ struct RegrownDual {
 /// used), its seeds those of `triangles` (2 by S) and
 /// its dual `triangles` with their Voronoi vertices `vertices` (2 by T).
 /// segments: the boundary seed pairs; domain_on: the domain's level set on
-/// any grid (as VoronoiProblem::domain). The missed segments are clustered
+/// any grid (as VoronoiProblem::domain); fine: seeds (ascending) whose
+/// spacing, the smallest semi-axis of the metric there, the global grid does
+/// not resolve. The missed segments, or if there are fine seeds these alone
+/// (call again for the segments still missed), are clustered
 /// (those within 2 pads of each other share a window), each cluster's window
 /// regrown by refine_dual with `engine`, again twice as fine while some of
 /// the cluster's segments are still missed and the node cap allows (the
@@ -70,6 +85,7 @@ RegrownDual regrow_windows(const VoronoiProblem& problem,
                            const Eigen::Matrix2Xd& vertices,
                            const std::vector<std::array<int, 2>>& segments,
                            const std::function<Eigen::VectorXd(const CartesianGrid&)>& domain_on,
-                           const std::string& engine, const WindowOptions& options = {});
+                           const std::string& engine, const WindowOptions& options = {},
+                           const std::vector<int>& fine = {});
 
 }  // namespace homesh

@@ -91,3 +91,27 @@ TEST_CASE("Lloyd's iteration lowers the CVT energy and keeps the fixed seeds", "
     CHECK(far_ten < 4.0 * p.grid.dx);
   }
 }
+
+TEST_CASE("Lloyd's iteration keeps the held seeds and refuses a wrong count of flags",
+          "[voronoi][lloyd]") {
+  VoronoiProblem p;
+  p.grid = CartesianGrid::spanning({0, 0}, {1, 1}, 81, 81);
+  p.seeds = test::uniform_seeds(20, 3, 0.05, 0.95);
+  std::vector<char> held(20, 0);
+  for (int s = 0; s < 20; s += 3) held[s] = 1;
+  LloydOptions o;
+  o.iterations = 3;
+  const Eigen::Matrix2Xd moved = lloyd_relaxation(p, 2, "fast_marching", o, held);
+  int kept = 0, free_moved = 0;
+  for (int s = 0; s < 20; ++s) {
+    const bool same = moved.col(s) == p.seeds.col(s);
+    if (s < 2 || held[s])
+      kept += same;
+    else
+      free_moved += !same;
+  }
+  CHECK(kept == 2 + 6);  // seeds 0, 1 and the held 3, 6, ..., 18 (0 counted once)
+  CHECK(free_moved > 8);
+  REQUIRE_THROWS_WITH(lloyd_relaxation(p, 2, "fast_marching", o, std::vector<char>(19, 0)),
+                      "voronoi: 19 held flags for 20 seeds");
+}

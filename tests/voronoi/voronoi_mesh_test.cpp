@@ -94,3 +94,117 @@ TEST_CASE("voronoi_mesh names the seed file of a seed outside the domain", "[vor
       homesh::voronoi_mesh(b, MetricField::constant(64 * Eigen::Matrix2d::Identity()), o),
       "seeds.txt:4: seed (2, 0.5) lies outside the domain");
 }
+
+namespace {
+
+// The unit square graded along x: h(x) = 0.01 + 0.12 x, the boundary seeded
+// at that spacing (the left side at 0.01, the right at 0.13).
+SeededBoundary graded_square(double (*h)(double)) {
+  std::vector<double> xs{0};
+  while (xs.back() < 1) xs.push_back(xs.back() + h(xs.back()));
+  const double stretch = 1 / xs.back();  // the last step onto x = 1
+  for (double& x : xs) x *= stretch;
+  const int nx = static_cast<int>(xs.size()) - 1;
+  const int left = static_cast<int>(std::round(1 / h(0))),
+            right = static_cast<int>(std::round(1 / h(1)));
+  SeededBoundary b;
+  b.surfaces.push_back({1, {{{1, false}, {2, false}, {3, false}, {4, false}}}});
+  std::vector<Eigen::Vector2d> pts;
+  const auto add = [&](const Eigen::Vector2d& p, homesh::NodeClass c) {
+    pts.push_back(p);
+    b.classes.push_back(c);
+    return static_cast<int>(pts.size()) - 1;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Vector2d corner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int c = 0; c < 4; ++c) add(corner[c], {0, c + 1, nan});
+  // Curve c from corner c to corner c + 1, at parameters t in (0, 1).
+  const auto curve = [&](int c, const std::vector<double>& t) {
+    const Eigen::Vector2d a = corner[c], z = corner[(c + 1) % 4];
+    std::vector<int> on{c};
+    for (const double u : t) on.push_back(add(a + (z - a) * u, {1, c + 1, u}));
+    on.push_back((c + 1) % 4);
+    b.curve_seeds[c + 1] = on;
+    Eigen::Matrix2Xd samples(2, 401);
+    for (int k = 0; k <= 400; ++k) samples.col(k) = a + (z - a) * k / 400.0;
+    b.curve_samples[c + 1] = samples;
+  };
+  std::vector<double> bottom, top, side_r, side_l;
+  for (int k = 1; k < nx; ++k) bottom.push_back(xs[k]);
+  for (int k = nx - 1; k >= 1; --k) top.push_back(1 - xs[k]);
+  for (int k = 1; k < right; ++k) side_r.push_back(static_cast<double>(k) / right);
+  for (int k = 1; k < left; ++k) side_l.push_back(static_cast<double>(k) / left);
+  curve(0, bottom);
+  curve(1, side_r);
+  curve(2, top);
+  curve(3, side_l);
+  b.seeds.resize(2, static_cast<Eigen::Index>(pts.size()));
+  for (std::size_t k = 0; k < pts.size(); ++k) b.seeds.col(static_cast<Eigen::Index>(k)) = pts[k];
+  return b;
+}
+
+// Mean ratio 4 sqrt(3) A / (sum of squared edges), 1 equilateral (Q11).
+double mean_ratio_mean(const homesh::Mesh& m, double* worst) {
+  double sum = 0;
+  *worst = 1;
+  for (Eigen::Index f = 0; f < m.tri.cols(); ++f) {
+    const Eigen::Vector2d a = m.x.col(m.tri(0, f)), b = m.x.col(m.tri(1, f)),
+                          c = m.x.col(m.tri(2, f));
+    const double area = 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+    const double q = 4 * std::sqrt(3.0) * area /
+                     ((b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm());
+    sum += q;
+    *worst = std::min(*worst, q);
+  }
+  return sum / static_cast<double>(m.tri.cols());
+}
+
+}  // namespace
+
+TEST_CASE(
+    "voronoi_mesh grows the fine seeds of a graded square in windows, as well as on one "
+    "fine grid",
+    "[voronoi]") {
+  double (*h)(double) = [](double x) { return 0.01 + 0.12 * x; };
+  const SeededBoundary b = graded_square(h);
+  const homesh::CartesianGrid coarse =
+      homesh::CartesianGrid::spanning({-0.05, -0.05}, {1.05, 1.05}, 23, 23);
+  std::vector<Eigen::Matrix2d> M(coarse.node_count());
+  for (int j = 0; j < coarse.ny; ++j)
+    for (int i = 0; i < coarse.nx; ++i) {
+      const double hx = h(std::clamp(coarse.point(i, j).x(), 0.0, 1.0));
+      M[coarse.index(i, j)] = Eigen::Matrix2d::Identity() / (hx * hx);
+    }
+  const MetricField metric(coarse, M);
+  homesh::VoronoiMeshOptions o;
+  o.lloyd.iterations = 4;
+  homesh::VoronoiReport windows, one_grid;
+  const homesh::Mesh a = homesh::voronoi_mesh(b, metric, o, &windows);
+  o.fine_windows = false;
+  const homesh::Mesh c = homesh::voronoi_mesh(b, metric, o, &one_grid);
+  const homesh::VoronoiSurfaceReport &w = windows.surfaces.at(0), &g = one_grid.surfaces.at(0);
+  INFO("windows: grid " << w.grid.nx << ", " << w.fine_seeds << " fine seeds, " << w.fine_windows
+                        << " + " << w.windows - w.fine_windows << " windows, " << a.num_triangles()
+                        << " triangles; one grid " << g.grid.nx << ", " << c.num_triangles()
+                        << " triangles");
+  // The growth grid is sized for half the seeds, 6 cells per size (the median seed size here
+  // is about 0.028), against 6 cells per 0.01 for the finest on one grid.
+  CHECK(g.grid.nx >= 600);
+  CHECK(w.grid.nx < 0.7 * g.grid.nx);
+  CHECK(w.fine_seeds > 200);
+  CHECK(w.fine_windows >= 1);
+  CHECK(g.fine_seeds == 0);
+  for (const homesh::Mesh* m : {&a, &c}) {
+    CHECK(total_area(*m) == Approx(1.0).epsilon(1e-12));
+    CHECK(m->num_lines() == static_cast<int>(b.classes.size()));
+  }
+  CHECK(windows.filled_triangles == 0);
+  CHECK(one_grid.filled_triangles == 0);
+  CHECK(std::abs(a.num_triangles() - c.num_triangles()) < 0.02 * c.num_triangles());
+  double worst_a = 0, worst_c = 0;
+  const double mean_a = mean_ratio_mean(a, &worst_a), mean_c = mean_ratio_mean(c, &worst_c);
+  INFO("mean ratio: windows " << mean_a << " (worst " << worst_a << "), one grid " << mean_c
+                              << " (worst " << worst_c << ")");
+  CHECK(mean_a > mean_c - 0.005);
+  CHECK(worst_a > 0.6);
+}

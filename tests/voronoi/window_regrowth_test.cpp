@@ -101,3 +101,14 @@ TEST_CASE("a window still missing segments grows again twice as fine", "[voronoi
   CHECK(capped.finer_windows == 0);
   CHECK(!missed_segments(s.segments, capped.triangles).empty());
 }
+
+TEST_CASE("cluster spots: within reach times the larger size, transitively", "[voronoi][window]") {
+  // A chain 0-1-2 (steps 1, size 0.3, reach 4: 1.2 apart at most), 3 far, 4 big enough to
+  // reach 3.
+  const std::vector<Eigen::Vector2d> p{{0, 0}, {1, 0}, {2, 0}, {10, 0}, {10, 4}};
+  const std::vector<double> size{0.3, 0.3, 0.3, 0.1, 1.0};
+  const std::vector<std::vector<int>> c = cluster_spots(p, size, 4.0);
+  CHECK(c == std::vector<std::vector<int>>{{0, 1, 2}, {3, 4}});
+  CHECK(cluster_spots(p, std::vector<double>(5, 0.2), 4.0).size() == 5);
+  CHECK(cluster_spots({}, {}, 4.0).empty());
+}

@@ -65,9 +65,11 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
         s.refined_seeds);
     if (s.windows > 0)
       log.info(
-          "voronoi: surface {}: the dual missed {} boundary segments: regrown in {} windows "
-          "(finer grids of up to {} nodes per side, {} grown again twice as fine), +{} seeds",
-          s.tag, s.missed_segments, s.windows, s.window_nodes, s.finer_windows, s.regrown_seeds);
+          "voronoi: surface {}: {} seeds finer than the grid grown in {} windows; then the dual "
+          "missed {} boundary segments: regrown in {} windows (finer grids of up to {} nodes per "
+          "side, {} grown again twice as fine), +{} seeds",
+          s.tag, s.fine_seeds, s.fine_windows, s.missed_segments, s.windows - s.fine_windows,
+          s.window_nodes, s.finer_windows, s.regrown_seeds);
     if (s.filled > 0 || s.dual_dropped > 0)
       log.info(
           "voronoi: surface {}: the dual does not conform: {} of {} boundary segments missing "
@@ -192,7 +194,12 @@ Stage voronoi_stage() {
       where<int>(
           integer(0, 20000), [](const int& n) { return n == 0 || n >= 32; },
           "must be 0 (automatic) or at least 32"),
-      "grid nodes along the longer side (0: the smallest size over 6 cells, 200 to 1500)");
+      "grid nodes along the longer side (0: automatic, see windows)");
+  t.add(
+      "windows", [](O& o) -> bool& { return o.mesher.fine_windows; }, boolean(),
+      "with grid=0: the crystals grow on a grid of 6 cells per size for half the seeds, 200 to "
+      "1500 nodes along the longer side, and in windows round the finer seeds on grids of "
+      "their own (Lloyd's iteration too) | off: on one grid of 6 cells per smallest size");
   return make_stage<O>("voronoi",
                        "new linear triangle mesh of the input's CAD, dual to the crystal Voronoi "
                        "diagram (thesis Ch 2; replaces any mesh)",

@@ -1,0 +1,193 @@
+#!/usr/bin/python3
+"""Benchmark (issue 22): homesh's crystal-growth Voronoi mesher against Gmsh's 2D meshers on
+the CAD models of the curving corpus (scripts/bench/corpus.py), side by side in one run.
+
+Each model (the corpus's shapes with their wall and far-field sizes: a Gmsh Threshold field
+on the distance to the walls, as corpus.py sets it) is meshed in its own forked child by:
+  gmsh frontal       : generate(2) with Mesh.Algorithm 6 (Frontal-Delaunay, Gmsh's default);
+  gmsh delaunay      : generate(2) with Mesh.Algorithm 5;
+  voronoi            : homesh.voronoi() with its defaults (it meshes with Gmsh's default
+                       first, for its sizes: that time is in its own);
+  voronoi windows=off: homesh.voronoi(windows=False), one grid for the smallest size.
+Referee: Gmsh's AnalyseMeshQuality ICN (inverse condition number: for a linear triangle the
+mean ratio, 1 equilateral), min and mean over the triangles, and its minJ/maxJ (invalid:
+<= 0). Seconds: wall time of the meshing call alone (the CAD and the field are made first).
+voronoi's filled triangles (made by the constrained fill, not by the dual) are recorded.
+
+Usage:
+  PYTHONPATH=build/python /usr/bin/python3 scripts/bench/voronoi_corpus.py
+      [--cases PATTERN] [--methods PATTERN] [--out out/bench/voronoi] [--timeout 300]
+Writes OUT/voronoi_corpus.csv and OUT/voronoi_corpus.png, and prints a table per model:
+triangles, ICN min / mean, seconds, and voronoi's time over frontal's.
+"""
+import argparse
+import csv
+import fnmatch
+import multiprocessing as mp
+import os
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+import corpus  # noqa: E402
+
+METHODS = ["gmsh frontal", "gmsh delaunay", "voronoi", "voronoi windows=off"]
+FIELDS = ["case", "method", "status", "triangles", "icn_min", "icn_mean", "invalid",
+          "filled", "seconds", "error"]
+
+
+def models():
+    """One corpus case per CAD model and sizes (the mesher does not matter here)."""
+    seen, out = set(), []
+    for c in corpus.CASES:
+        key = (c.shape, repr(sorted(c.args.items())), c.h_wall, c.h_far)
+        if key not in seen:
+            seen.add(key)
+            out.append(c)
+    return out
+
+
+def icn():
+    """(min, mean, triangles, invalid) of Gmsh's ICN and minJ/maxJ on the current model."""
+    import gmsh
+    import numpy as np
+    for name, value in [("JacobianDeterminant", 1), ("IGEMeasure", 0), ("ICNMeasure", 1),
+                        ("CreateView", 1), ("Recompute", 1), ("DimensionOfElements", 2)]:
+        gmsh.plugin.setNumber("AnalyseMeshQuality", name, value)
+    before = set(gmsh.view.getTags())
+    gmsh.plugin.run("AnalyseMeshQuality")
+    values = {}
+    for tag in set(gmsh.view.getTags()) - before:
+        name = gmsh.option.getString(f"View[{gmsh.view.getIndex(tag)}].Name")
+        _, _, data, _, _ = gmsh.view.getModelData(tag, 0)
+        values[name.split()[0]] = np.array([d[0] for d in data])
+    q, jac = values["ICN"], values["minJ/maxJ"]
+    return float(q.min()), float(q.mean()), len(q), int((jac <= 0).sum())
+
+
+def child(conn, name, method):
+    import gmsh
+    row = dict(case=name, method=method, status="ok")
+    try:
+        gmsh.initialize()
+        gmsh.option.setNumber("General.Terminal", 0)
+        c = corpus.case(name)
+        gmsh.model.add(c.name)
+        surfaces, walls, farfield = corpus._cad(c)
+        for dim, tags, group in [(1, walls, corpus.WALL), (1, farfield, "farfield"),
+                                 (2, surfaces, "fluid")]:
+            if tags:
+                gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), group)
+        corpus._sizes(c, walls)
+        filled = ""
+        start = time.perf_counter()
+        if method.startswith("gmsh"):
+            gmsh.option.setNumber("Mesh.Algorithm", 6 if method == "gmsh frontal" else 5)
+            gmsh.model.mesh.generate(2)
+        else:
+            import homesh
+            homesh.set_quiet(True)
+            r = homesh.voronoi(**({"windows": False} if "windows=off" in method else {}))
+            filled = r["results"]["filled_triangles"]
+        row["seconds"] = time.perf_counter() - start
+        q_min, q_mean, triangles, invalid = icn()
+        row.update(icn_min=q_min, icn_mean=q_mean, triangles=triangles, invalid=invalid,
+                   filled=filled)
+    except Exception as e:  # noqa: BLE001 (recorded, the run goes on)
+        row.update(status="error", error=str(e).splitlines()[0][:200])
+    conn.send(row)
+
+
+def run_one(name, method, timeout):
+    ctx = mp.get_context("fork")
+    here, there = ctx.Pipe(duplex=False)
+    proc = ctx.Process(target=child, args=(there, name, method))
+    proc.start()
+    if here.poll(timeout):
+        row = here.recv()
+        proc.join()
+        return row
+    proc.kill()
+    proc.join()
+    return dict(case=name, method=method, status="timeout")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--cases", default="*")
+    parser.add_argument("--methods", default="*")
+    parser.add_argument("--out", default=os.path.join(ROOT, "out", "bench", "voronoi"))
+    parser.add_argument("--timeout", type=float, default=300)
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    cases = [c for c in models()
+             if any(fnmatch.fnmatch(c.name, p) for p in args.cases.split(","))]
+    methods = [m for m in METHODS if any(fnmatch.fnmatch(m, p) for p in args.methods.split(","))]
+    rows = []
+    for c in cases:
+        for m in methods:
+            r = run_one(c.name, m, args.timeout)
+            rows.append(r)
+            if r["status"] == "ok":
+                print(f"{c.name:28s} {m:20s} {r['triangles']:6d} tri  ICN min {r['icn_min']:.4f}"
+                      f" mean {r['icn_mean']:.4f}  invalid {r['invalid']}  filled "
+                      f"{r['filled'] if r['filled'] != '' else '-':>3}  {r['seconds']:7.2f} s",
+                      flush=True)
+            else:
+                print(f"{c.name:28s} {m:20s} {r['status']}: {r.get('error', '')}", flush=True)
+    path = os.path.join(args.out, "voronoi_corpus.csv")
+    with open(path + ".tmp", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=FIELDS)
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(path + ".tmp", path)
+    summary(rows, [c.name for c in cases])
+    plot(rows, [c.name for c in cases], methods, os.path.join(args.out, "voronoi_corpus.png"))
+    print(f"wrote {path}")
+
+
+def summary(rows, cases):
+    """Per model: voronoi's time over frontal's and its ICN against frontal's."""
+    by = {(r["case"], r["method"]): r for r in rows if r["status"] == "ok"}
+    print(f"\n{'model':28s} {'time/frontal':>12s} {'ICN min v/f':>14s} {'ICN mean v/f':>16s}")
+    for c in cases:
+        f, v = by.get((c, "gmsh frontal")), by.get((c, "voronoi"))
+        if f and v:
+            print(f"{c:28s} {v['seconds'] / f['seconds']:12.1f} "
+                  f"{v['icn_min']:6.3f}/{f['icn_min']:6.3f} {v['icn_mean']:7.4f}/{f['icn_mean']:7.4f}")
+
+
+def plot(rows, cases, methods, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    by = {(r["case"], r["method"]): r for r in rows if r["status"] == "ok"}
+    fig, axes = plt.subplots(3, 1, figsize=(max(8, 0.7 * len(cases)), 11), sharex=True)
+    width = 0.8 / len(methods)
+    for ax, key, title in [(axes[0], "seconds", "wall time (s, log)"),
+                           (axes[1], "icn_min", "worst ICN"),
+                           (axes[2], "icn_mean", "mean ICN")]:
+        for k, m in enumerate(methods):
+            values = [float(by[(c, m)][key]) if (c, m) in by else np.nan for c in cases]
+            ax.bar(np.arange(len(cases)) + (k - (len(methods) - 1) / 2) * width, values, width,
+                   label=m)
+        ax.set_title(title)
+        ax.grid(axis="y", alpha=0.3)
+    axes[0].set_yscale("log")
+    axes[2].set_ylim(0.85, 1.0)
+    axes[2].set_xticks(np.arange(len(cases)))
+    axes[2].set_xticklabels(cases, rotation=60, ha="right", fontsize=8)
+    axes[0].legend(fontsize=8)
+    fig.suptitle("homesh voronoi against Gmsh's meshers on the corpus's CAD models "
+                 "(referee: Gmsh's AnalyseMeshQuality)")
+    fig.tight_layout()
+    fig.savefig(path + ".tmp.png", dpi=100)
+    os.replace(path + ".tmp.png", path)
+
+
+if __name__ == "__main__":
+    main()
