@@ -12,15 +12,16 @@
 namespace homesh {
 namespace {
 
-double quality(const Mesh& m, int a, int b, int c) {
-  Eigen::Matrix<double, 2, 3> X;
-  X << m.x.col(a), m.x.col(b), m.x.col(c);
-  return layers_detail::orient(X.col(0), X.col(1), X.col(2)) > 0 ? radius_ratio(X) : -1.0;
-}
-
-}  // namespace
-
-int flip_edges(Mesh& m, double gain, int max_sweeps) {
+// The flips with q(X) of counter-clockwise triangles X (a template: open_room
+// flips the whole mesh after every load step, no call through a std::function
+// per triangle for the radius ratio).
+template <class Q>
+int flip_edges_by(Mesh& m, const Q& q, double gain, int max_sweeps) {
+  const auto quality = [&](const Mesh& mesh, int a, int b, int c) {
+    Eigen::Matrix<double, 2, 3> X;
+    X << mesh.x.col(a), mesh.x.col(b), mesh.x.col(c);
+    return layers_detail::orient(X.col(0), X.col(1), X.col(2)) > 0 ? q(X) : -1.0;
+  };
   // Edges as 64-bit keys (a << 32 | b). Sorted vectors, not maps: open_room calls
   // this after every load step on the whole mesh, and a std::map of its 3 N
   // directed edges cost 75 % of the layers stage at 1.1 M triangles.
@@ -71,6 +72,17 @@ int flip_edges(Mesh& m, double gain, int max_sweeps) {
     if (flipped == 0) break;
   }
   return flips;
+}
+
+}  // namespace
+
+int flip_edges(Mesh& m, double gain, int max_sweeps) {
+  return flip_edges_by(
+      m, [](const Eigen::Matrix<double, 2, 3>& X) { return radius_ratio(X); }, gain, max_sweeps);
+}
+
+int flip_edges(Mesh& m, const TriangleQuality& quality, double gain, int max_sweeps) {
+  return flip_edges_by(m, quality, gain, max_sweeps);
 }
 
 }  // namespace homesh

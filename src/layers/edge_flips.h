@@ -3,6 +3,8 @@
 // diagonal swap of thesis Fig 4.5c applied to the existing mesh while the room
 // for the layers opens, so triangles squeezed against the moving front re-join
 // better-placed neighbours instead of degenerating.
+#include <functional>
+
 #include "core/mesh.h"
 
 namespace homesh {
@@ -15,5 +17,12 @@ namespace homesh {
 /// triangle count and each triangle's surface are kept. Returns the number of
 /// flips. m must be linear.
 int flip_edges(Mesh& m, double gain = 1e-3, int max_sweeps = 10);
+
+/// The quality of a counter-clockwise straight triangle (corners 2 by 3), higher better.
+using TriangleQuality = std::function<double(const Eigen::Matrix<double, 2, 3>&)>;
+
+/// The same with `quality` in place of the radius ratio (e.g. the radius
+/// ratio in a metric).
+int flip_edges(Mesh& m, const TriangleQuality& quality, double gain = 1e-3, int max_sweeps = 10);
 
 }  // namespace homesh

@@ -1,5 +1,6 @@
 #include "voronoi/voronoi_mesh.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -10,11 +11,14 @@
 #include "core/check_mesh.h"
 #include "core/error.h"
 #include "core/progress.h"
+#include "layers/edge_flips.h"
+#include "layers/radius_ratio.h"
 #include "voronoi/boundary_encroachment.h"
 #include "voronoi/conforming_dual.h"
 #include "voronoi/loop_distance.h"
 #include "voronoi/metric_smoothing.h"
 #include "voronoi/refine_dual.h"
+#include "voronoi/valence_three.h"
 #include "voronoi/window_regrowth.h"
 
 namespace homesh {
@@ -424,6 +428,12 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
         throw Error(o.seed_path + ":" + std::to_string(o.seed_list->lines[k]) + ": seed " +
                     point_text(o.seed_list->points.col(k)) + " lies outside the domain");
 
+  // Topological clean-up: the interior nodes of three triangles go.
+  if (o.cleanup) {
+    std::vector<char> interior(nodes.size());
+    for (std::size_t k = 0; k < nodes.size(); ++k) interior[k] = node_class[k].dim == 2;
+    rep.valence_three = remove_valence_three(triangles, triangle_surface, interior);
+  }
   // Nodes no triangle uses (interior seeds cut off by a boundary chord) go.
   std::vector<int> renumber(nodes.size(), -1);
   for (const auto& t : triangles)
@@ -431,6 +441,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
   for (std::size_t k = 0; k < boundary.classes.size(); ++k) renumber[k] = 0;
   int count = 0;
   for (int& r : renumber) r = r < 0 ? (++rep.dropped_seeds, -1) : count++;
+  rep.dropped_seeds -= rep.valence_three;
   Mesh m;
   m.order = 1;
   m.x.resize(2, count);
@@ -457,10 +468,20 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
       m.point_node.push_back(renumber[k]);
       m.point_entity.push_back(boundary.classes[k].tag);
     }
+  // Edge flips that raise the worst radius ratio in the metric (at each
+  // quad's triangles' centroids), before and after the smoothing.
+  const auto metric_radius_ratio = [&metric](const Eigen::Matrix<double, 2, 3>& X) {
+    const Eigen::Vector2d c = X.rowwise().mean();
+    const Eigen::Matrix2d root =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(metric.metric_at(c)).operatorSqrt();
+    return radius_ratio(root * X);
+  };
+  if (o.cleanup) rep.flips = flip_edges(m, metric_radius_ratio);
   if (o.smooth > 0) {
     std::vector<char> free_node(m.node_class.size());
     for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
     rep.smoothing_moves = smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
+    if (o.cleanup) rep.flips += flip_edges(m, metric_radius_ratio);
   }
   return m;
 }

@@ -21,9 +21,13 @@ namespace homesh {
 
 /// Every default of the mesher (the voronoi stage's options map onto these).
 struct VoronoiMeshOptions {
-  SeedingOptions seeding;                ///< automatic seeds: front rows, Poisson-disc
-  LloydOptions lloyd;                    ///< on the automatic seeds (front rows held)
-  int smooth = 3;                        ///< smoothing sweeps (voronoi/metric_smoothing.h)
+  SeedingOptions seeding;  ///< automatic seeds: front rows, Poisson-disc
+  LloydOptions lloyd;      ///< on the automatic seeds (front rows held)
+  int smooth = 3;          ///< smoothing sweeps (voronoi/metric_smoothing.h)
+  /// Topological clean-up of the dual: interior nodes of three triangles
+  /// removed (voronoi/valence_three.h), edges flipped where that raises the
+  /// worst radius ratio in the metric (before and after the smoothing).
+  bool cleanup = true;
   std::string engine = "fast_marching";  ///< a name of voronoi_engines()
   int grid = 0;  ///< grid nodes along a surface's longer side; 0: its smallest size over 6 cells
   /// With grid = 0: the crystals grow on a grid sized for all but the finer
@@ -65,6 +69,8 @@ struct VoronoiReport {
   int refined_seeds = 0;     ///< seeds added at faulty triple points
   int dropped_seeds = 0;     ///< interior seeds cut off by a boundary chord
   int smoothing_moves = 0;
+  int valence_three = 0;  ///< interior nodes of three triangles removed
+  int flips = 0;          ///< edges flipped
 };
 
 /// A linear triangle mesh of the surfaces of `boundary` (nodes: the boundary

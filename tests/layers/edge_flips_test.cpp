@@ -60,3 +60,16 @@ TEST_CASE("edge flips leave good diagonals, non-convex quads, surface borders, l
   embedded.line_entity = {7};
   CHECK(flip_edges(embedded) == 0);
 }
+
+TEST_CASE("edge flips by another quality: the radius ratio in a sheared metric", "[layers]") {
+  // quad(-1.5), the parallelogram on (2, 0) and (-1.5, 1), has the better diagonal 0-2 for
+  // the radius ratio; mapped by T = [1 3.5; 0 1] (the metric T^T T) it is (0,0), (2,0),
+  // (4,1), (2,1), where the other diagonal is the short one.
+  Mesh m = quad(-1.5);
+  Eigen::Matrix2d T;
+  T << 1, 3.5, 0, 1;
+  const auto sheared = [&T](const Eigen::Matrix<double, 2, 3>& X) { return radius_ratio(T * X); };
+  REQUIRE(flip_edges(m, sheared) == 1);
+  CHECK(flip_edges(m, sheared) == 0);
+  CHECK(flip_edges(m) == 1);  // back, by the plain radius ratio
+}

@@ -79,6 +79,9 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
     log.info("voronoi: surface {}: {} triangles, {} from the dual, {} from the fill", s.tag,
              s.from_dual + s.filled, s.from_dual, s.filled);
   }
+  if (o.mesher.cleanup)
+    log.info("voronoi: clean-up: {} interior nodes of three triangles removed, {} edges flipped",
+             rep.valence_three, rep.flips);
   if (o.mesher.smooth > 0)
     log.info("voronoi: {} smoothing sweeps of the interior nodes, {} moves", o.mesher.smooth,
              rep.smoothing_moves);
@@ -186,6 +189,11 @@ Stage voronoi_stage() {
       "below 0.8, on the sum of inverse mean ratios; a move is kept only if the worst "
       "triangle round the node gets no worse in the metric; the connectivity stays the "
       "dual's; 0: none)");
+  t.add(
+      "cleanup", [](O& o) -> bool& { return o.mesher.cleanup; }, boolean(),
+      "topological clean-up of the dual: interior nodes of only three triangles removed (their "
+      "triangles merged), edges flipped where the other diagonal raises the worst radius ratio "
+      "in the metric, before and after the smoothing | off: the dual's connectivity");
   t.add(
       "engine", [](O& o) -> std::string& { return o.mesher.engine; }, one_of(engines),
       names_text(engines));
