@@ -1,6 +1,6 @@
 #include "voronoi/voronoi_mesh.h"
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,7 +12,6 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "layers/edge_flips.h"
-#include "layers/radius_ratio.h"
 #include "voronoi/boundary_encroachment.h"
 #include "voronoi/conforming_dual.h"
 #include "voronoi/loop_distance.h"
@@ -468,20 +467,22 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
       m.point_node.push_back(renumber[k]);
       m.point_entity.push_back(boundary.classes[k].tag);
     }
-  // Edge flips that raise the worst radius ratio in the metric (at each
-  // quad's triangles' centroids), before and after the smoothing.
-  const auto metric_radius_ratio = [&metric](const Eigen::Matrix<double, 2, 3>& X) {
-    const Eigen::Vector2d c = X.rowwise().mean();
-    const Eigen::Matrix2d root =
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(metric.metric_at(c)).operatorSqrt();
-    return radius_ratio(root * X);
+  // Edge flips that raise the worst mean ratio in the metric (at each
+  // triangle's centroid; Q11 and Gmsh's ICN for a linear triangle), after
+  // the smoothing: the radius ratio's flips lowered the worst mean ratio.
+  const auto metric_mean_ratio = [&metric](const Eigen::Matrix<double, 2, 3>& X) {
+    const Eigen::Matrix2d M = metric.metric_at(X.rowwise().mean());
+    const Eigen::Vector2d a = X.col(1) - X.col(0), b = X.col(2) - X.col(0), c = b - a;
+    const double area = 0.5 * std::sqrt(M.determinant()) * (a.x() * b.y() - a.y() * b.x());
+    return 4 * std::sqrt(3.0) * area / (a.dot(M * a) + b.dot(M * b) + c.dot(M * c));
   };
-  if (o.cleanup) rep.flips = flip_edges(m, metric_radius_ratio);
   if (o.smooth > 0) {
     std::vector<char> free_node(m.node_class.size());
     for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
     rep.smoothing_moves = smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
-    if (o.cleanup) rep.flips += flip_edges(m, metric_radius_ratio);
+    if (o.cleanup) rep.flips += flip_edges(m, metric_mean_ratio);
+  } else if (o.cleanup) {
+    rep.flips = flip_edges(m, metric_mean_ratio);
   }
   return m;
 }

@@ -26,7 +26,7 @@ struct VoronoiMeshOptions {
   int smooth = 3;          ///< smoothing sweeps (voronoi/metric_smoothing.h)
   /// Topological clean-up of the dual: interior nodes of three triangles
   /// removed (voronoi/valence_three.h), edges flipped where that raises the
-  /// worst radius ratio in the metric (before and after the smoothing).
+  /// worst mean ratio (Q11) in the metric, after the smoothing.
   bool cleanup = true;
   std::string engine = "fast_marching";  ///< a name of voronoi_engines()
   int grid = 0;  ///< grid nodes along a surface's longer side; 0: its smallest size over 6 cells

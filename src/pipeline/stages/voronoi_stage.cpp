@@ -192,8 +192,8 @@ Stage voronoi_stage() {
   t.add(
       "cleanup", [](O& o) -> bool& { return o.mesher.cleanup; }, boolean(),
       "topological clean-up of the dual: interior nodes of only three triangles removed (their "
-      "triangles merged), edges flipped where the other diagonal raises the worst radius ratio "
-      "in the metric, before and after the smoothing | off: the dual's connectivity");
+      "triangles merged), edges flipped where the other diagonal raises the worst mean ratio "
+      "in the metric (Q11), after the smoothing | off: the dual's connectivity");
   t.add(
       "engine", [](O& o) -> std::string& { return o.mesher.engine; }, one_of(engines),
       names_text(engines));
