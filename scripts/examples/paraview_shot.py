@@ -8,7 +8,7 @@ background, parallel camera. Run it with ParaView's Python (Debian packages
 paraview and python3-paraview), under `xvfb-run -a` without a display; the
 `--` keeps pvpython from taking the script's options for its own:
 
-  xvfb-run -a pvpython -- scripts/examples/paraview_shot.py VTU PNG
+  xvfb-run -a -s "-screen 0 1280x1024x24" pvpython -- scripts/examples/paraview_shot.py VTU PNG
       [--field NAME] [--subdivision N] [--centre X Y] [--scale S] [--size W H]
       [--edges] [--low L]
 

@@ -63,7 +63,10 @@ def shots(request, vtu):
     # ParaView's start-up costs ~10 s: it draws the curved picture only.
     for name, level in (("curved", 3), ("straight", 0))[:1 if program == "paraview" else 2]:
         png = vtu.replace(".vtu", f"_{program}_{name}.png")
-        subprocess.run(["xvfb-run", "-a", *PROGRAMS[program], vtu, png, "--field",
+        # A 24-bit screen: at xvfb-run's default 8 bits ParaView finds no OpenGL visual
+        # and aborts (most runs).
+        subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", *PROGRAMS[program],
+                        vtu, png, "--field",
                         "homesh: Q4 Equal volume, at nodes, smallest at the point",
                         "--subdivision", str(level), "--centre", "0", "0", "--scale", str(SCALE),
                         "--size", str(SIZE), str(SIZE)], check=True, capture_output=True,
