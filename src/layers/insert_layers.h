@@ -44,6 +44,9 @@ struct LayerOptions {
   int layers = 3;                  ///< n >= 1
   double first = 1e-3;             ///< thickness of the layer at the wall, > 0
   double ratio = 1.2;              ///< growth of thickness from layer to layer, > 0
+  /// Largest fraction of the distance along a normal to the nearest other
+  /// boundary the stack may take; thinner layers there (stack_fit.h). In (0, 1].
+  double fill = 0.4;
   NormalOptions normals;
   RoomOptions room;
 };
@@ -54,6 +57,17 @@ struct LayerLine {
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();  ///< unit
   double scale = 1;                                     ///< node k at depth d_k * scale
   std::vector<int> nodes;  ///< n + 1 nodes: the wall node, the layer nodes, the front node
+};
+
+/// Wall nodes where the stack was thinned to fit (stack_fit.h).
+struct ThinnedLayers {
+  Eigen::Vector2d from, to;  ///< the first and last wall node of the stretch
+  Eigen::Vector2d tightest;  ///< the wall node thinned most
+  int lines = 0;             ///< normal lines thinned
+  double factor = 1;         ///< thickness there over the full stack's, in (0, 1)
+  double gap = 0;            ///< distance along the normal there to the nearest boundary
+  int curve = -1;            ///< the wall's curve there
+  int facing = -1;           ///< the curve met along the normal
 };
 
 struct LayerResult {
@@ -68,13 +82,15 @@ struct LayerResult {
   int wall_edges = 0;
   int fan_nodes = 0;
   int gap_triangles = 0;
-  double thickness = 0;       ///< d_n
-  int push_steps = 0;         ///< accepted elastic steps opening the room
-  int solves = 0;             ///< elasticity solves
-  int smoothed = 0;           ///< node moves repairing triangles the push squeezed (open_room.h)
-  bool from_corners = false;  ///< the input was of order > 1
-  int sharpest_node = -1;     ///< wall node with the largest domain angle
-  double sharpest_angle = 0;  ///< its domain angle, radians
+  double thickness = 0;  ///< d_n
+  int push_steps = 0;    ///< accepted elastic steps opening the room
+  int solves = 0;        ///< elasticity solves
+  int cleared = 0;       ///< free nodes removed from the room before it opened (clear_room.h)
+  int smoothed = 0;      ///< node moves repairing triangles the push squeezed (open_room.h)
+  std::vector<ThinnedLayers> thinned;  ///< where the stack was thinned
+  bool from_corners = false;           ///< the input was of order > 1
+  int sharpest_node = -1;              ///< wall node with the largest domain angle
+  double sharpest_angle = 0;           ///< its domain angle, radians
 };
 
 /// d_0 = 0, d_1, ..., d_n as above. Throws homesh::Error unless n >= 1,
@@ -84,7 +100,8 @@ std::vector<double> layer_depths(double first, double ratio, int n);
 /// m with boundary layers on the walls of opt; every triangle certified valid.
 /// Throws homesh::Error with a message naming the cause and the place if the
 /// input is not valid, the walls are unusable (wall_loops.h), the room cannot
-/// be opened with every element valid, or the layers themselves would fold.
+/// be opened with every element valid, the layers themselves would fold, or
+/// not even the first layer fits somewhere (stack_fit.h: checked before the room opens).
 LayerResult insert_layers(const Mesh& m, const LayerOptions& opt);
 
 /// The layer triangles (layer > 0) having a node on a normal line of
