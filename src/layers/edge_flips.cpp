@@ -21,6 +21,12 @@ double quality(const Mesh& m, int a, int b, int c) {
 }  // namespace
 
 int flip_edges(Mesh& m, double gain, int max_sweeps) {
+  std::vector<int> all(m.num_triangles());
+  for (int e = 0; e < m.num_triangles(); ++e) all[e] = e;
+  return flip_edges(m, all, gain, max_sweeps);
+}
+
+int flip_edges(Mesh& m, const std::vector<int>& triangles, double gain, int max_sweeps) {
   // Edges as 64-bit keys (a << 32 | b). Sorted vectors, not maps: open_room calls
   // this after every load step on the whole mesh, and a std::map of its 3 N
   // directed edges cost 75 % of the layers stage at 1.1 M triangles.
@@ -35,14 +41,13 @@ int flip_edges(Mesh& m, double gain, int max_sweeps) {
     std::int64_t edge;  ///< directed edge (a, b) listed counter-clockwise by triangle e
     int e, c;           ///< the triangle and its third node
   };
-  std::vector<Side> side(3 * std::size_t(m.num_triangles()));
+  std::vector<Side> side(3 * triangles.size());
   const auto by_edge = [](const Side& s, const Side& t) { return s.edge < t.edge; };
   int flips = 0;
   for (int sweep = 0; sweep < max_sweeps; ++sweep) {
-    for (int e = 0; e < m.num_triangles(); ++e)
-      for (int i = 0; i < 3; ++i)
-        side[3 * std::size_t(e) + i] = {key(m.tri(i, e), m.tri((i + 1) % 3, e)), e,
-                                        m.tri((i + 2) % 3, e)};
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+      for (int i = 0, e = triangles[t]; i < 3; ++i)
+        side[3 * t + i] = {key(m.tri(i, e), m.tri((i + 1) % 3, e)), e, m.tri((i + 2) % 3, e)};
     // Stable: of repeated directed edges (a non-conforming mesh) the last listed wins.
     std::stable_sort(side.begin(), side.end(), by_edge);
     std::vector<bool> touched(m.num_triangles(), false);

@@ -3,6 +3,8 @@
 // diagonal swap of thesis Fig 4.5c applied to the existing mesh while the room
 // for the layers opens, so triangles squeezed against the moving front re-join
 // better-placed neighbours instead of degenerating.
+#include <vector>
+
 #include "core/mesh.h"
 
 namespace homesh {
@@ -15,5 +17,9 @@ namespace homesh {
 /// triangle count and each triangle's surface are kept. Returns the number of
 /// flips. m must be linear.
 int flip_edges(Mesh& m, double gain = 1e-3, int max_sweeps = 10);
+
+/// As above, flipping only edges shared by two of `triangles` (distinct
+/// indices): after a local change, at the cost of the triangles it touched.
+int flip_edges(Mesh& m, const std::vector<int>& triangles, double gain = 1e-3, int max_sweeps = 10);
 
 }  // namespace homesh

@@ -16,16 +16,20 @@
 // second), two triangles each, the diagonal chosen for the better worst
 // radius ratio (Eq 4.17) among valid choices (the swap of Fig 4.5c). Between
 // consecutive normals of a fan: a triangle at the wall node, then n - 1 quads.
-// Triangle count: T + 2 n E + 2 n (m - 1) per fan of m normals (the m - 1 gap
-// triangles of the split included), E the number of wall edges; node count:
-// V + n L, L the number of normal lines.
+// Triangle count: T - 2 c + 2 n E + 2 n (m - 1) per fan of m normals (the m - 1
+// gap triangles of the split included), E the number of wall edges, c the free
+// nodes removed from the room (clear_room.h); node count: V - c + n L, L the
+// number of normal lines.
+//
+// Where a normal meets another boundary closer than d_n / fill, the layers of
+// that line are thinned to fit (stack_fit.h) and the result lists where.
 //
 // Open walls (wall_loops.h) end on a non-wall boundary: their end normals run
 // along it (wall_normals.h), the end front nodes slide along it while the room
 // opens, and its boundary line at each end is split at the end's n nodes
 // (lines: + n per end), which are classified on its curve.
 //
-// The walls keep their nodes, classification (curve and parameter), lines,
+// The walls keep their nodes (and their indices), classification (curve and parameter), lines,
 // points and physical groups; other new nodes lie on the surface of the wall's
 // triangles, whose tag the layer triangles take. Meshes of order p > 1 are
 // reduced to their corners first (the result is linear; curve it afterwards).
@@ -72,8 +76,8 @@ struct ThinnedLayers {
 
 struct LayerResult {
   Mesh mesh;
-  /// #triangles: 0 for the existing mesh (the input's T triangles first, with
-  /// their surfaces, re-joined by the push's edge flips; the fans' gap
+  /// #triangles: 0 for the existing mesh (the input's T - 2 c triangles first,
+  /// with their surfaces, re-joined by the push's edge flips; the fans' gap
   /// triangles next), k = 1..n for layer k from the wall.
   std::vector<int> layer;
   std::vector<LayerLine> lines;

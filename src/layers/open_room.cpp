@@ -125,15 +125,23 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
       }
     }
     if (r.steps >= opt.max_steps || !(fraction >= opt.min_fraction)) break;
-    progress.update(std::lround(100 * r.reached), "step " + std::to_string(r.steps + 1));
+    progress.update(std::lround(100 * r.reached), "% pushed, step " + std::to_string(r.steps + 1));
     Eigen::Matrix2Xd goal = current.x + fraction * rest;
     const DeformResult s = deform_mesh(current, goal, prescribed, deform);
     r.solves += s.solves;
     if (!(s.reached > 0)) break;
+    // Flips where the step moved nodes: the solve's region, not the whole mesh.
+    std::vector<int> moved;
+    for (int e = 0; e < current.num_triangles(); ++e)
+      for (int i = 0; i < 3; ++i)
+        if (s.mesh.x.col(current.tri(i, e)) != current.x.col(current.tri(i, e))) {
+          moved.push_back(e);
+          break;
+        }
     current = s.mesh;
     r.reached += s.reached * fraction * (1 - r.reached);
     ++r.steps;
-    if (opt.flips && flip_edges(current) > 0) tris = front_triangles(current);
+    if (opt.flips && flip_edges(current, moved) > 0) tris = front_triangles(current);
     clear();
     if (!s.complete) break;
   }

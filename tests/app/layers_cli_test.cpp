@@ -125,6 +125,27 @@ TEST_CASE("layers: 5 normals at the trailing edge beat a single one (Figs 4.10, 
   CHECK(multi.corner_q > 0.3);
 }
 
+TEST_CASE("layers: the README's NACA-7526 stack on a mesh twice as fine opens in few steps",
+          "[app]") {
+  // Factor 0.5: 29 trailing-edge elements under the 0.072 stack. Pushing them all
+  // ahead of the front stalled after 200 steps; the room is cleared of them instead.
+  const auto r = run_homesh(geo +
+                            "naca.geo -m mesh:factor=0.5 -m layers:walls=aerofoil:n=15:"
+                            "first=1e-3:ratio=1.2:normals=multi:fan=5:fan_angle=320");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const LayerLog l = parse(r.output);
+  CHECK(l.fans == 1);
+  CHECK(l.cleared > 1000);  // measured 1781 of 4968 nodes
+  CHECK(l.after == l.before - 2 * l.cleared + 2 * 15 * l.wall_edges + 2 * 15 * 4);
+  std::smatch m;
+  REQUIRE(std::regex_search(r.output, m, std::regex(R"(room opened in (\d+) elastic step)")));
+  CHECK(std::stoi(m[1]) < 50);  // measured 24
+  REQUIRE(std::regex_search(r.output, m, std::regex(R"(of the other triangles: min (\d\.\d+))")));
+  CHECK(std::stod(m[1]) > 0.2);  // measured 0.31
+  CHECK(r.output.find("thinned") == std::string::npos);
+}
+
 TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p = 3, valid",
           "[app]") {
   const TempDir dir;
