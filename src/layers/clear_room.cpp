@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "layers/plane_geometry.h"
+#include "layers/radius_ratio.h"
 
 namespace homesh {
 namespace {
@@ -26,8 +27,8 @@ int corner(const Mesh& m, int e, int v) {
 
 }  // namespace
 
-std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& free,
-                            double margin) {
+std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& free, double margin,
+                            double min_quality) {
   const int lines = static_cast<int>(room.front.size());
   std::vector<int> prev(lines, -1), line_of(m.num_nodes(), -1);
   for (int k = 0; k < lines; ++k) {
@@ -108,7 +109,8 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
         p.col(i) = m.x.col(b);
         if (line_of[b] >= 0) on_front.push_back(line_of[b]);
       }
-      if (!(orient(p.col(0), p.col(1), p.col(2)) > 0)) return false;
+      if (!(orient(p.col(0), p.col(1), p.col(2)) > 0) || radius_ratio(p) < min_quality)
+        return false;
       // No triangle across the room: front nodes only of consecutive lines, two at most.
       if (on_front.size() == 3) return false;
       if (on_front.size() == 2 && room.next[on_front[0]] != on_front[1] &&

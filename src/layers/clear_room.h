@@ -14,9 +14,11 @@
 // two triangles of the edge f v go, v's other triangles take f for v. A
 // collapse is done only if it keeps the mesh a manifold (f and v share exactly
 // the two neighbours of that edge) and every triangle it changes
-// counter-clockwise and with front nodes of at most two consecutive lines (no
-// triangle across the room, which would fold as the front moves); the nodes nearest the wall go
-// first, sweeping until none collapses. Removed nodes stay in m.x, used by no triangle.
+// counter-clockwise, not flat (radius ratio, Eq 4.17, at least min_quality: a
+// sliver pointing along the front folds at the slightest push) and with front nodes of at most two
+// consecutive lines (no triangle across the room, which would fold as the front moves); the nodes
+// nearest the wall go first, sweeping until none collapses. Removed nodes stay in m.x, used by no
+// triangle.
 #include <Eigen/Core>
 #include <vector>
 
@@ -39,7 +41,7 @@ struct Room {
 /// room first) as above. Triangles keep their order and surfaces, the removed
 /// ones dropped. Returns the removed nodes.
 std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& free,
-                            double margin = 1.2);
+                            double margin = 1.2, double min_quality = 0.02);
 
 /// Removes the nodes of m no triangle, line or point uses, moving the last
 /// nodes into the holes so that the nodes before the first hole and those not

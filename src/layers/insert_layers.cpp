@@ -168,17 +168,21 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
         r.lines.push_back({loops[l].nodes[i], w.directions[j], w.scale, {}});
       }
   const int count = static_cast<int>(r.lines.size());
+  // Along the front: a fan's normals run from the incoming edge's side (its
+  // last) to the outgoing edge's (its first), which faces the next node's last.
   Room plan{{}, moving, std::vector<int>(count, -1), Eigen::Matrix2Xd(2, count)};
+  for (const LayerLine& line : r.lines) plan.wall.push_back(line.wall_node);
   for (std::size_t l = 0, k = 0; l < loops.size(); ++l) {
-    const std::size_t first = k;
-    for (const auto& f : split.front[l]) k += f.size();
-    for (std::size_t j = first; j < k; ++j) {
-      plan.wall.push_back(r.lines[j].wall_node);
-      plan.next[j] = j + 1 < k ? static_cast<int>(j + 1) : -1;
+    const int size = loops[l].size();
+    std::vector<int> start(size + 1, static_cast<int>(k));
+    for (int i = 0; i < size; ++i)
+      start[i + 1] = start[i] + static_cast<int>(split.front[l][i].size());
+    for (int i = 0; i < size; ++i) {
+      for (int j = start[i] + 1; j < start[i + 1]; ++j) plan.next[j] = j - 1;
+      if (i + 1 < size || loops[l].closed) plan.next[start[i]] = start[(i + 1) % size + 1] - 1;
     }
-    if (loops[l].closed) plan.next[k - 1] = static_cast<int>(first);
+    k = start[size];
   }
-
   // Thinner stacks where the walls leave too little room (stack_fit.h).
   Eigen::Matrix2Xd direction(2, count);
   std::vector<double> scale(count);
