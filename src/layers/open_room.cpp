@@ -19,6 +19,18 @@ namespace {
 
 using layers_detail::cross;
 
+// The triangles of m with a node away from where it was (before: 2 by #nodes).
+std::vector<int> moved_triangles(const Mesh& m, const Eigen::Matrix2Xd& before) {
+  std::vector<int> moved;
+  for (int e = 0; e < m.num_triangles(); ++e)
+    for (int i = 0; i < 3; ++i)
+      if (m.x.col(m.tri(i, e)) != before.col(m.tri(i, e))) {
+        moved.push_back(e);
+        break;
+      }
+  return moved;
+}
+
 }  // namespace
 
 double fold_fraction(const Eigen::Matrix<double, 2, 3>& x, const Eigen::Matrix<double, 2, 3>& u) {
@@ -131,13 +143,7 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
     r.solves += s.solves;
     if (!(s.reached > 0)) break;
     // Flips where the step moved nodes: the solve's region, not the whole mesh.
-    std::vector<int> moved;
-    for (int e = 0; e < current.num_triangles(); ++e)
-      for (int i = 0; i < 3; ++i)
-        if (s.mesh.x.col(current.tri(i, e)) != current.x.col(current.tri(i, e))) {
-          moved.push_back(e);
-          break;
-        }
+    const std::vector<int> moved = moved_triangles(s.mesh, current.x);
     current = s.mesh;
     r.reached += s.reached * fraction * (1 - r.reached);
     ++r.steps;
@@ -146,8 +152,9 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
     if (!s.complete) break;
   }
   if (r.complete && opt.smoothing) {
+    const Eigen::Matrix2Xd before = current.x;
     r.smoothed = smooth_stars(current, free, floor.empty() ? star_quality(m) : floor);
-    if (r.smoothed > 0 && opt.flips) flip_edges(current);
+    if (r.smoothed > 0 && opt.flips) flip_edges(current, moved_triangles(current, before));
   }
   r.mesh = std::move(current);
   return r;
