@@ -1,9 +1,10 @@
 #pragma once
 // Insertion of boundary layers into an existing triangle mesh (thesis
 // Section 4.3): the walls' front is detached (front_split.h) and pushed into the
-// domain by the elastic analogy (open_room.h) by the total thickness, then the
-// room between wall and front is filled layer by layer from the wall outward,
-// along single or multiple normals (wall_normals.h).
+// domain by the elastic analogy (open_room.h) by the total thickness, the free
+// nodes in its way removed (clear_room.h), then the room between wall and front
+// is filled layer by layer from the wall outward, along single or multiple
+// normals (wall_normals.h).
 //
 // Layer depths grow geometrically: layer k (k = 1 at the wall) is
 // first * ratio^(k-1) thick, so the interfaces lie at depths

@@ -133,8 +133,10 @@ Stage layers_stage() {
                            : "";
   });
   return make_stage<LayerOptions>(
-      "layers", "boundary layers on walls: room opened by the elastic analogy, geometric layers", t,
-      run);
+      "layers",
+      "boundary layers on walls: room cleared and opened by the elastic analogy, geometric "
+      "layers, thinned where walls are close",
+      t, run);
 }
 
 }  // namespace homesh
