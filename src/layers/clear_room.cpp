@@ -1,8 +1,10 @@
 #include "layers/clear_room.h"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 
+#include "core/progress.h"
 #include "layers/plane_geometry.h"
 #include "layers/radius_ratio.h"
 
@@ -134,8 +136,10 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
     return true;
   };
 
+  Progress progress("clearing room", 0);
   for (bool changed = true; changed;) {
     changed = false;
+    progress.update(0, std::to_string(gone.size()) + " nodes removed");
     std::vector<std::pair<double, std::pair<int, int>>> candidates;  // (distance, (v, f))
     for (int k = 0; k < lines; ++k) {
       const int f = room.front[k];

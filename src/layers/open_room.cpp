@@ -153,6 +153,7 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
   }
   if (r.complete && opt.smoothing) {
     const Eigen::Matrix2Xd before = current.x;
+    progress.update(100, "% pushed, smoothing squeezed triangles");
     r.smoothed = smooth_stars(current, free, floor.empty() ? star_quality(m) : floor);
     if (r.smoothed > 0 && opt.flips) flip_edges(current, moved_triangles(current, before));
   }
