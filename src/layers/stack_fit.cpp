@@ -12,13 +12,21 @@ namespace {
 using layers_detail::cross;
 
 // Distance along the ray p + s d, s > 0, to segment a b; +infinity if it misses.
+// A segment along the ray (the boundary an open wall's end normal slides on)
+// is met at its nearer end: the front node cannot slide past a boundary node.
 double ray_hit(const Eigen::Vector2d& p, const Eigen::Vector2d& d, const Eigen::Vector2d& a,
                const Eigen::Vector2d& b) {
   const Eigen::Vector2d e = b - a;
   const double den = cross(d, e);
-  if (den == 0) return std::numeric_limits<double>::infinity();
+  const double inf = std::numeric_limits<double>::infinity();
+  if (std::abs(den) <= 1e-12 * e.norm()) {
+    if (std::abs(cross(d, a - p)) > 1e-12 * (a - p).norm()) return inf;
+    const double sa = d.dot(a - p), sb = d.dot(b - p);
+    const double near = std::min(sa > 0 ? sa : inf, sb > 0 ? sb : inf);
+    return near;
+  }
   const double s = cross(a - p, e) / den, u = cross(a - p, d) / den;
-  return s > 0 && u >= 0 && u <= 1 ? s : std::numeric_limits<double>::infinity();
+  return s > 0 && u >= 0 && u <= 1 ? s : inf;
 }
 
 }  // namespace
