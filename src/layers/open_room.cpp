@@ -93,7 +93,10 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
   auto clear = [&] {
     if (room == nullptr || !(opt.clear > 0)) return;
     const std::vector<int> gone = clear_room(current, *room, free, opt.clear);
-    for (int v : gone) free[v] = false;
+    for (int v : gone) {
+      free[v] = false;
+      prescribed[v] = true;  // in no triangle now: held, so a whole-mesh solve stays regular
+    }
     r.cleared += static_cast<int>(gone.size());
     if (!gone.empty()) tris = front_triangles(current);
   };
