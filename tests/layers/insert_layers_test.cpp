@@ -205,6 +205,13 @@ TEST_CASE("layers clear the nodes in the room: counts, walls kept, valid", "[lay
   CHECK(r.mesh.line == m.line);
   for (int i = 0; i < m.num_nodes(); ++i)
     if (m.node_class[i].dim < 2) CHECK((r.mesh.x.col(i) - m.x.col(i)).norm() == 0);
+
+  // Solved on the whole mesh (reach 0), the removed nodes held: the same room.
+  LayerOptions whole = test::layer_options({"wall"}, n, 0.02, 1.2);
+  whole.room.reach = 0;
+  const LayerResult w = insert_layers(m, whole);
+  CHECK(w.cleared == r.cleared);
+  CHECK(mesh_validity(w.mesh).invalid == 0);
 }
 
 TEST_CASE("layers thin the stack in a narrow gap and say by how much", "[layers]") {
