@@ -25,8 +25,18 @@ Gmsh's AnalyseMeshQuality plugin (JacobianDeterminant=1) as referee: the number 
 triangles with minJ/maxJ <= 0 and the worst minJ/maxJ. Seconds: wall time of the layer
 insertion (homesh.mesh + homesh.layers, or generate with the field) and of the curving call.
 
+Timing (issue 20, `--timing`): the README's NACA-7526 stack (15 layers from 1e-3, ratio 1.2,
+a fan of 5 normals at the trailing edge) on meshes of about 1e4 and 1e5 triangles (the .geo's
+sizes times Mesh.MeshSizeFactor, TIMING_FACTORS; add 1e6 with --timing-1e6). Wall time of
+homesh's layers stage alone (homesh.layers, after homesh.mesh, timed apart) against Gmsh's
+generate(2) with the BoundaryLayer field above (same factor, same stack; it builds its layers
+while it meshes, so its whole meshing is what the stage is set against), each the best of
+TIMING_REPEATS fresh runs in one process, the two alternating; the ratio is homesh / Gmsh.
+
 Usage: PYTHONPATH=build/python /usr/bin/python3 scripts/bench/layers_vs_gmsh.py [OUTDIR]
-Writes OUTDIR/layers_vs_gmsh.csv and OUTDIR/layers_vs_gmsh.png (default out/bench).
+       PYTHONPATH=build/python /usr/bin/python3 scripts/bench/layers_vs_gmsh.py --timing [OUTDIR]
+Writes OUTDIR/layers_vs_gmsh.csv and OUTDIR/layers_vs_gmsh.png (default out/bench), with
+--timing OUTDIR/layers_timing.csv and OUTDIR/layers_timing.png.
 """
 import csv
 import os
@@ -232,9 +242,102 @@ def plot(rows, path):
     fig.savefig(path, dpi=110)
 
 
+TIMING_FACTORS = [0.5, 0.15]  # about 1e4 and 1e5 triangles before the layers
+TIMING_FACTOR_1E6 = 0.05
+TIMING_STACK = dict(n=15, first=1e-3, ratio=1.2)
+TIMING_REPEATS = 3
+
+
+def timed_homesh(factor):
+    """(seconds of homesh.mesh, of homesh.layers, triangles before, after) at this factor."""
+    open_geo("geo/naca.geo")
+    t = time.perf_counter()
+    homesh.mesh(factor=factor)
+    meshed = time.perf_counter() - t
+    before = sum(len(gmsh.model.mesh.getElementsByType(k)[0])
+                 for k in gmsh.model.mesh.getElementTypes(2))
+    t = time.perf_counter()
+    homesh.layers(walls="aerofoil", normals="multi", fan=FAN_NORMALS, fan_angle=FAN_ANGLE,
+                  **TIMING_STACK)
+    layered = time.perf_counter() - t
+    after = sum(len(gmsh.model.mesh.getElementsByType(k)[0])
+                for k in gmsh.model.mesh.getElementTypes(2))
+    gmsh.finalize()
+    return meshed, layered, before, after
+
+
+def timed_gmsh(factor):
+    """(seconds of generate(2) with the BoundaryLayer field, triangles) at this factor."""
+    global FIRST, RATIO, LAYERS
+    saved = FIRST, RATIO, LAYERS
+    FIRST, RATIO, LAYERS = TIMING_STACK["first"], TIMING_STACK["ratio"], TIMING_STACK["n"]
+    try:
+        open_geo("geo/naca.geo")
+        gmsh.option.setNumber("Mesh.MeshSizeFactor", factor)
+        t = time.perf_counter()
+        gmsh_layers("aerofoil", True)
+        seconds = time.perf_counter() - t
+        triangles = sum(len(gmsh.model.mesh.getElementsByType(k)[0])
+                        for k in gmsh.model.mesh.getElementTypes(2))
+        gmsh.finalize()
+    finally:
+        FIRST, RATIO, LAYERS = saved
+    return seconds, triangles
+
+
+def timing(outdir, factors):
+    homesh.set_quiet(True)
+    rows = []
+    for factor in factors:
+        h, g = [], []
+        for _ in range(TIMING_REPEATS):
+            h.append(timed_homesh(factor))
+            g.append(timed_gmsh(factor))
+        best_h = min(h, key=lambda r: r[1])
+        best_g = min(g, key=lambda r: r[0])
+        row = dict(factor=factor, triangles_before=best_h[2], homesh_triangles=best_h[3],
+                   gmsh_triangles=best_g[1], homesh_mesh_seconds=min(r[0] for r in h),
+                   homesh_layers_seconds=best_h[1], gmsh_bl_seconds=best_g[0],
+                   ratio=best_h[1] / best_g[0], load=os.getloadavg()[0])
+        rows.append(row)
+        print(f"factor {factor}: {row['triangles_before']} triangles -> homesh "
+              f"{row['homesh_triangles']} in {row['homesh_layers_seconds']:.2f} s (layers stage; "
+              f"mesh {row['homesh_mesh_seconds']:.2f} s), Gmsh BoundaryLayer "
+              f"{row['gmsh_triangles']} in {row['gmsh_bl_seconds']:.2f} s: ratio "
+              f"{row['ratio']:.2f} (load {row['load']:.1f})", flush=True)
+    with open(os.path.join(outdir, "layers_timing.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    n = [r["triangles_before"] for r in rows]
+    ax.loglog(n, [r["homesh_layers_seconds"] for r in rows], "o-", label="homesh layers stage")
+    ax.loglog(n, [r["homesh_mesh_seconds"] + r["homesh_layers_seconds"] for r in rows], "o--",
+              label="homesh mesh + layers")
+    ax.loglog(n, [r["gmsh_bl_seconds"] for r in rows], "s-", label="Gmsh generate + BoundaryLayer")
+    for r in rows:
+        ax.annotate(f"x{r['ratio']:.2f}", (r["triangles_before"], r["homesh_layers_seconds"]),
+                    textcoords="offset points", xytext=(5, -12), fontsize=8)
+    ax.set_xlabel("triangles before the layers")
+    ax.set_ylabel("wall time, s (best of %d)" % TIMING_REPEATS)
+    ax.set_title("NACA-7526, 15 layers from 1e-3, ratio 1.2, TE fan of 5")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "layers_timing.png"), dpi=110)
+    return rows
+
+
 def main():
-    outdir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "out", "bench")
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    outdir = args[0] if args else os.path.join(ROOT, "out", "bench")
     os.makedirs(outdir, exist_ok=True)
+    if "--timing" in sys.argv:
+        timing(outdir, TIMING_FACTORS + ([TIMING_FACTOR_1E6] if "--timing-1e6" in sys.argv else []))
+        return
     rows = run(outdir)
     print(f"\n{'case':<11} {'layers':<7} {'tri':>6} {'worst Q':>8} {'fan Q':>7} {'p':>2} "
           f"{'curving':<7} {'invalid':>7} {'worst minJ/maxJ':>15} {'seconds':>8}")

@@ -12,11 +12,20 @@
 namespace homesh {
 namespace {
 
+std::vector<int> all_triangles(const Mesh& m) {
+  std::vector<int> all(m.num_triangles());
+  for (int e = 0; e < m.num_triangles(); ++e) all[e] = e;
+  return all;
+}
+
+double plain_radius_ratio(const Eigen::Matrix<double, 2, 3>& X) { return radius_ratio(X); }
+
 // The flips with q(X) of counter-clockwise triangles X (a template: open_room
-// flips the whole mesh after every load step, no call through a std::function
-// per triangle for the radius ratio).
+// flips after every load step, no call through a std::function per triangle
+// for the radius ratio).
 template <class Q>
-int flip_edges_by(Mesh& m, const Q& q, double gain, int max_sweeps) {
+int flip_edges_by(Mesh& m, const std::vector<int>& triangles, const Q& q, double gain,
+                  int max_sweeps) {
   const auto quality = [&](const Mesh& mesh, int a, int b, int c) {
     Eigen::Matrix<double, 2, 3> X;
     X << mesh.x.col(a), mesh.x.col(b), mesh.x.col(c);
@@ -36,14 +45,13 @@ int flip_edges_by(Mesh& m, const Q& q, double gain, int max_sweeps) {
     std::int64_t edge;  ///< directed edge (a, b) listed counter-clockwise by triangle e
     int e, c;           ///< the triangle and its third node
   };
-  std::vector<Side> side(3 * std::size_t(m.num_triangles()));
+  std::vector<Side> side(3 * triangles.size());
   const auto by_edge = [](const Side& s, const Side& t) { return s.edge < t.edge; };
   int flips = 0;
   for (int sweep = 0; sweep < max_sweeps; ++sweep) {
-    for (int e = 0; e < m.num_triangles(); ++e)
-      for (int i = 0; i < 3; ++i)
-        side[3 * std::size_t(e) + i] = {key(m.tri(i, e), m.tri((i + 1) % 3, e)), e,
-                                        m.tri((i + 2) % 3, e)};
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+      for (int i = 0, e = triangles[t]; i < 3; ++i)
+        side[3 * t + i] = {key(m.tri(i, e), m.tri((i + 1) % 3, e)), e, m.tri((i + 2) % 3, e)};
     // Stable: of repeated directed edges (a non-conforming mesh) the last listed wins.
     std::stable_sort(side.begin(), side.end(), by_edge);
     std::vector<bool> touched(m.num_triangles(), false);
@@ -77,12 +85,15 @@ int flip_edges_by(Mesh& m, const Q& q, double gain, int max_sweeps) {
 }  // namespace
 
 int flip_edges(Mesh& m, double gain, int max_sweeps) {
-  return flip_edges_by(
-      m, [](const Eigen::Matrix<double, 2, 3>& X) { return radius_ratio(X); }, gain, max_sweeps);
+  return flip_edges_by(m, all_triangles(m), plain_radius_ratio, gain, max_sweeps);
+}
+
+int flip_edges(Mesh& m, const std::vector<int>& triangles, double gain, int max_sweeps) {
+  return flip_edges_by(m, triangles, plain_radius_ratio, gain, max_sweeps);
 }
 
 int flip_edges(Mesh& m, const TriangleQuality& quality, double gain, int max_sweeps) {
-  return flip_edges_by(m, quality, gain, max_sweeps);
+  return flip_edges_by(m, all_triangles(m), quality, gain, max_sweeps);
 }
 
 }  // namespace homesh

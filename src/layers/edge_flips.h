@@ -4,6 +4,7 @@
 // for the layers opens, so triangles squeezed against the moving front re-join
 // better-placed neighbours instead of degenerating.
 #include <functional>
+#include <vector>
 
 #include "core/mesh.h"
 
@@ -18,11 +19,15 @@ namespace homesh {
 /// flips. m must be linear.
 int flip_edges(Mesh& m, double gain = 1e-3, int max_sweeps = 10);
 
+/// As above, flipping only edges shared by two of `triangles` (distinct
+/// indices): after a local change, at the cost of the triangles it touched.
+int flip_edges(Mesh& m, const std::vector<int>& triangles, double gain = 1e-3, int max_sweeps = 10);
+
 /// The quality of a counter-clockwise straight triangle (corners 2 by 3), higher better.
 using TriangleQuality = std::function<double(const Eigen::Matrix<double, 2, 3>&)>;
 
-/// The same with `quality` in place of the radius ratio (e.g. the radius
-/// ratio in a metric).
+/// The same on every triangle with `quality` in place of the radius ratio
+/// (e.g. the mean ratio in a metric).
 int flip_edges(Mesh& m, const TriangleQuality& quality, double gain = 1e-3, int max_sweeps = 10);
 
 }  // namespace homesh

@@ -8,9 +8,12 @@
 
 #include "core/error.h"
 #include "core/raise_order.h"
+#include "layers/clear_room.h"
 #include "layers/front_split.h"
 #include "layers/plane_geometry.h"
 #include "layers/radius_ratio.h"
+#include "layers/stack_fit.h"
+#include "layers/star_smoothing.h"
 #include "quality/mesh_validity.h"
 
 namespace homesh {
@@ -104,6 +107,12 @@ void split_end_lines(const std::vector<WallLoop>& loops,
   }
 }
 
+// v > 0 rounded down to 2 significant digits, for a suggestion that works.
+double round_down(double v) {
+  const double unit = std::pow(10.0, std::floor(std::log10(v)) - 1);
+  return std::floor(v / unit) * unit;
+}
+
 }  // namespace
 
 std::vector<double> layer_depths(double first, double ratio, int n) {
@@ -158,14 +167,56 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
         curve.push_back(loops[l].curves[i]);
         r.lines.push_back({loops[l].nodes[i], w.directions[j], w.scale, {}});
       }
-  Eigen::Matrix2Xd target(2, moving.size());
-  for (std::size_t k = 0; k < moving.size(); ++k) {
-    const LayerLine& line = r.lines[k];
-    target.col(k) = m.x.col(line.wall_node) + d[n] * line.scale * line.direction;
+  const int count = static_cast<int>(r.lines.size());
+  // Along the front: a fan's normals run from the incoming edge's side (its
+  // last) to the outgoing edge's (its first), which faces the next node's last.
+  Room plan{{}, moving, std::vector<int>(count, -1), Eigen::Matrix2Xd(2, count)};
+  for (const LayerLine& line : r.lines) plan.wall.push_back(line.wall_node);
+  for (std::size_t l = 0, k = 0; l < loops.size(); ++l) {
+    const int size = loops[l].size();
+    std::vector<int> start(size + 1, static_cast<int>(k));
+    for (int i = 0; i < size; ++i)
+      start[i + 1] = start[i] + static_cast<int>(split.front[l][i].size());
+    for (int i = 0; i < size; ++i) {
+      for (int j = start[i] + 1; j < start[i + 1]; ++j) plan.next[j] = j - 1;
+      if (i + 1 < size || loops[l].closed) plan.next[start[i]] = start[(i + 1) % size + 1] - 1;
+    }
+    k = start[size];
   }
+  // Thinner stacks where the walls leave too little room (stack_fit.h).
+  Eigen::Matrix2Xd direction(2, count);
+  std::vector<double> scale(count);
+  for (int k = 0; k < count; ++k) {
+    direction.col(k) = r.lines[k].direction;
+    scale[k] = r.lines[k].scale;
+  }
+  const StackFit fit =
+      fit_stack(m, plan.wall, direction, scale, plan.next, d[n], opt.first, opt.fill);
+  if (fit.no_room >= 0) {
+    const LayerLine& line = r.lines[fit.no_room];
+    const double room = opt.fill * fit.gap / line.scale;
+    throw Error("layers: no layer fits at the wall node " + point_text(m.x.col(line.wall_node)) +
+                " on curve " + std::to_string(curve[fit.no_room]) + ": along its normal curve " +
+                std::to_string(fit.curve) + " is " + number_text(fit.gap) +
+                " away, room for a stack " + number_text(room) + " deep (fill = " +
+                number_text(opt.fill) + "), less than the first layer (" + number_text(opt.first) +
+                "); first = " + number_text(round_down(0.5 * room)) + " would fit");
+  }
+  for (int k = 0; k < count; ++k) r.lines[k].scale *= fit.factor[k];
+  for (const ThinnedStretch& t : fit.thinned)
+    r.thinned.push_back({m.x.col(r.lines[t.first].wall_node), m.x.col(r.lines[t.last].wall_node),
+                         m.x.col(r.lines[t.tightest].wall_node), t.lines, t.factor, t.gap,
+                         curve[t.tightest], t.curve});
+  for (int k = 0; k < count; ++k)
+    plan.target.col(k) =
+        m.x.col(r.lines[k].wall_node) + d[n] * r.lines[k].scale * r.lines[k].direction;
+  const Eigen::Matrix2Xd& target = plan.target;
   std::vector<bool> fixed(split.mesh.num_nodes());
   for (int i = 0; i < split.mesh.num_nodes(); ++i) fixed[i] = split.mesh.node_class[i].dim < 2;
-  const RoomResult room = open_room(split.mesh, moving, target, fixed, opt.room);
+  std::vector<double> floor = star_quality(m);
+  floor.resize(split.mesh.num_nodes(), 1.0);
+  const RoomResult room = open_room(split.mesh, moving, target, fixed, opt.room, floor, &plan);
+  r.cleared = room.cleared;
   r.push_steps = room.steps;
   r.solves = room.solves;
   r.smoothed = room.smoothed;
@@ -184,7 +235,6 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
   Mesh& out = r.mesh;
   out = room.mesh;
   const int base = out.num_nodes();
-  const int count = static_cast<int>(r.lines.size());
   out.x.conservativeResize(2, base + count * (n - 1));
   for (int k = 0; k < count; ++k) {
     LayerLine& line = r.lines[k];
@@ -233,6 +283,13 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
   out.tri_entity.insert(out.tri_entity.end(), added.entity.begin(), added.entity.end());
   r.layer.assign(t0, 0);
   r.layer.insert(r.layer.end(), added.layer.begin(), added.layer.end());
+
+  const std::vector<int> renumber = drop_unused_nodes(out);
+  for (LayerLine& line : r.lines) {
+    line.wall_node = renumber[line.wall_node];
+    for (int& v : line.nodes) v = renumber[v];
+  }
+  if (r.sharpest_node >= 0) r.sharpest_node = renumber[r.sharpest_node];
 
   const MeshValidity v = mesh_validity(out);
   if (v.invalid > 0) {

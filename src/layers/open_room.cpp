@@ -5,8 +5,10 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "curving/analogy_formulation.h"
-#include "fem/solve_elasticity.h"
+#include "curving/deform_mesh.h"
+#include "layers/clear_room.h"
 #include "layers/edge_flips.h"
 #include "layers/plane_geometry.h"
 #include "layers/star_smoothing.h"
@@ -15,103 +17,148 @@
 namespace homesh {
 namespace {
 
-std::vector<std::vector<int>> node_triangles(const Mesh& m) {
-  std::vector<std::vector<int>> around(m.num_nodes());
+using layers_detail::cross;
+
+// The triangles of m with a node away from where it was (before: 2 by #nodes).
+std::vector<int> moved_triangles(const Mesh& m, const Eigen::Matrix2Xd& before) {
+  std::vector<int> moved;
   for (int e = 0; e < m.num_triangles(); ++e)
-    for (int i = 0; i < 3; ++i) around[m.tri(i, e)].push_back(e);
-  return around;
+    for (int i = 0; i < 3; ++i)
+      if (m.x.col(m.tri(i, e)) != before.col(m.tri(i, e))) {
+        moved.push_back(e);
+        break;
+      }
+  return moved;
 }
 
 }  // namespace
 
-double available_push(const Mesh& m, const std::vector<int>& triangles, int node,
-                      const Eigen::Vector2d& d) {
-  double delta = std::numeric_limits<double>::infinity();
-  for (int e : triangles) {
-    int p = 0;
-    while (p < 3 && m.tri(p, e) != node) ++p;
-    if (p == 3) continue;
-    const Eigen::Vector2d a = m.x.col(m.tri((p + 1) % 3, e)), b = m.x.col(m.tri((p + 2) % 3, e));
-    // Unit normal of a -> b towards the node (on its left for a counter-clockwise triangle).
-    const Eigen::Vector2d n = Eigen::Vector2d(a(1) - b(1), b(0) - a(0)).normalized();
-    const double height = n.dot(m.x.col(node) - a);
-    const double closing = -n.dot(d);
-    if (closing > 0) delta = std::min(delta, std::max(height, 0.0) / closing);
+double fold_fraction(const Eigen::Matrix<double, 2, 3>& x, const Eigen::Matrix<double, 2, 3>& u) {
+  // orient(x + t u) = a t^2 + b t + c, c > 0 for a counter-clockwise triangle.
+  const Eigen::Vector2d e1 = x.col(1) - x.col(0), e2 = x.col(2) - x.col(0);
+  const Eigen::Vector2d d1 = u.col(1) - u.col(0), d2 = u.col(2) - u.col(0);
+  const double a = cross(d1, d2), b = cross(e1, d2) + cross(d1, e2), c = cross(e1, e2);
+  const double inf = std::numeric_limits<double>::infinity();
+  if (!(c > 0)) return 0;
+  double t = inf;
+  if (std::abs(a) <= 1e-14 * (std::abs(b) + c)) {
+    if (b < 0) t = -c / b;
+  } else {
+    const double disc = b * b - 4 * a * c;
+    if (disc >= 0) {
+      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+      for (double root : {q / a, c / q})
+        if (root > 0) t = std::min(t, root);
+    }
   }
-  return delta;
+  return t;
 }
 
 RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen::Matrix2Xd& target,
-                     const std::vector<bool>& fixed, const RoomOptions& opt) {
+                     const std::vector<bool>& fixed, const RoomOptions& opt,
+                     const std::vector<double>& floor, const Room* room) {
   const int count = static_cast<int>(moving.size());
   if (target.cols() != count || fixed.size() != static_cast<std::size_t>(m.num_nodes()))
     throw Error("open_room: one target per moving node and one fixed flag per node are needed");
+  if (!floor.empty() && floor.size() != fixed.size())
+    throw Error("open_room: one smoothing floor per node is needed");
   if (!(opt.cap > 0 && opt.cap <= 1)) throw Error("open_room: cap must be in (0, 1]");
-  std::vector<std::vector<int>> around = node_triangles(m);
+  if (!(opt.min_fraction > 0 && opt.min_fraction < 1))
+    throw Error("open_room: min_fraction must be in (0, 1)");
+  std::vector<int> index(m.num_nodes(), -1);
+  for (int k = 0; k < count; ++k) index[moving[k]] = k;
+  auto front_triangles = [&](const Mesh& mesh) {
+    std::vector<int> tris;
+    for (int e = 0; e < mesh.num_triangles(); ++e)
+      if (index[mesh.tri(0, e)] >= 0 || index[mesh.tri(1, e)] >= 0 || index[mesh.tri(2, e)] >= 0)
+        tris.push_back(e);
+    return tris;
+  };
+  std::vector<int> tris = front_triangles(m);
 
-  const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
-  const FormulationParams& params = opt.params;
-  ElasticityOptions eo;
-  eo.assembly = params.assembly;
-  eo.solver = opt.solver;
+  DeformOptions deform;
+  deform.formulation = opt.formulation;
+  deform.params = opt.params;
+  deform.solver = opt.solver;
+  deform.max_halvings = opt.max_halvings;
+  deform.reach = opt.reach;
+  std::vector<bool> prescribed = fixed;
+  for (int v : moving) prescribed[v] = true;
 
   Mesh current = m;
-  const Eigen::Matrix2Xd start = m.x;
   RoomResult r;
-  double scale = 1;
-  for (int k = 0; k < count; ++k) scale = std::max(scale, (target.col(k) - start.col(k)).norm());
-  const double tolerance = 1e-12 * scale;
+  std::vector<bool> free(prescribed.size());
+  for (std::size_t i = 0; i < free.size(); ++i) free[i] = !prescribed[i];
+  // Free nodes in the room ahead of the front go, before and after each step.
+  auto clear = [&] {
+    if (room == nullptr || !(opt.clear > 0)) return;
+    const std::vector<int> gone = clear_room(current, *room, free, opt.clear);
+    for (int v : gone) {
+      free[v] = false;
+      prescribed[v] = true;  // in no triangle now: held, so a whole-mesh solve stays regular
+    }
+    r.cleared += static_cast<int>(gone.size());
+    if (!gone.empty()) tris = front_triangles(current);
+  };
+  clear();
+  double scale = 0;
+  for (int k = 0; k < count; ++k)
+    scale = std::max(scale, (target.col(k) - m.x.col(moving[k])).norm());
+  const double tolerance = 1e-12 * std::max(scale, 1.0);
+  Progress progress("room", 100);
 
   while (true) {
-    // The common fraction of the remaining motion that respects every node's cap.
-    double fraction = 1;
+    // The common fraction of the remaining motion that folds no triangle of
+    // the front, its free nodes held still, times cap.
+    Eigen::Matrix2Xd rest = Eigen::Matrix2Xd::Zero(2, current.num_nodes());
     bool left = false;
     for (int k = 0; k < count; ++k) {
-      const Eigen::Vector2d rest = target.col(k) - current.x.col(moving[k]);
-      const double length = rest.norm();
-      if (length <= tolerance) continue;
-      left = true;
-      const double f =
-          opt.cap * available_push(current, around[moving[k]], moving[k], rest / length) / length;
-      if (f < fraction) {
-        fraction = f;
-        r.bottleneck = k;
-      }
+      rest.col(moving[k]) = target.col(k) - current.x.col(moving[k]);
+      left = left || rest.col(moving[k]).norm() > tolerance;
     }
-    if (!left) {
-      for (int k = 0; k < count; ++k) current.x.col(moving[k]) = target.col(k);
+    // Straight to the targets if the free nodes are out of the way already.
+    Mesh jump = current;
+    for (int k = 0; k < count; ++k) jump.x.col(moving[k]) = target.col(k);
+    if (!left || mesh_validity(jump).invalid == 0) {
+      current = std::move(jump);
       r.complete = true;
       r.reached = 1;
       break;
     }
-    if (r.steps >= opt.max_steps || !(fraction > 1e-9)) break;
-    bool accepted = false;
-    for (int h = 0; h <= opt.max_halvings && !accepted; ++h, fraction *= 0.5) {
-      DirichletBC bc;
-      for (int i = 0; i < m.num_nodes(); ++i)
-        if (fixed[i]) bc.fix(i, Eigen::Vector2d::Zero());
-      for (int k = 0; k < count; ++k)
-        bc.fix(moving[k], Eigen::Vector2d(fraction * (target.col(k) - current.x.col(moving[k]))));
-      const ElasticitySolution s =
-          solve_elasticity(current, formulation.coefficients(current, m, params), bc, eo);
-      ++r.solves;
-      Mesh trial = current;
-      trial.x += s.u;
-      if (mesh_validity(trial).invalid > 0) continue;
-      current = std::move(trial);
-      r.reached += fraction * (1 - r.reached);
-      accepted = true;
-      if (opt.flips && flip_edges(current) > 0) around = node_triangles(current);
+    double fraction = 1;
+    for (int e : tris) {
+      Eigen::Matrix<double, 2, 3> x, u;
+      for (int i = 0; i < 3; ++i) {
+        x.col(i) = current.x.col(current.tri(i, e));
+        u.col(i) = rest.col(current.tri(i, e));
+      }
+      const double f = opt.cap * fold_fraction(x, u);
+      if (f < fraction) {
+        fraction = f;
+        for (int i = 0; i < 3; ++i)
+          if (index[current.tri(i, e)] >= 0) r.bottleneck = index[current.tri(i, e)];
+      }
     }
-    if (!accepted) break;
+    if (r.steps >= opt.max_steps || !(fraction >= opt.min_fraction)) break;
+    progress.update(std::lround(100 * r.reached), "% pushed, step " + std::to_string(r.steps + 1));
+    Eigen::Matrix2Xd goal = current.x + fraction * rest;
+    const DeformResult s = deform_mesh(current, goal, prescribed, deform);
+    r.solves += s.solves;
+    if (!(s.reached > 0)) break;
+    // Flips where the step moved nodes: the solve's region, not the whole mesh.
+    const std::vector<int> moved = moved_triangles(s.mesh, current.x);
+    current = s.mesh;
+    r.reached += s.reached * fraction * (1 - r.reached);
     ++r.steps;
+    if (opt.flips && flip_edges(current, moved) > 0) tris = front_triangles(current);
+    clear();
+    if (!s.complete) break;
   }
   if (r.complete && opt.smoothing) {
-    std::vector<bool> free(fixed.size());
-    for (int i = 0; i < m.num_nodes(); ++i) free[i] = !fixed[i];
-    for (int k = 0; k < count; ++k) free[moving[k]] = false;
-    r.smoothed = smooth_stars(current, free, star_quality(m));
-    if (r.smoothed > 0 && opt.flips) flip_edges(current);
+    const Eigen::Matrix2Xd before = current.x;
+    progress.update(100, "% pushed, smoothing squeezed triangles");
+    r.smoothed = smooth_stars(current, free, floor.empty() ? star_quality(m) : floor);
+    if (r.smoothed > 0 && opt.flips) flip_edges(current, moved_triangles(current, before));
   }
   r.mesh = std::move(current);
   return r;

@@ -5,14 +5,16 @@
 // delta_p = x_Omega - x_Gamma prescribed on them (Eq 4.16), every other
 // boundary node fixed.
 //
-// The push goes in steps capped per node as in Fig 4.5a: a node moving along d
-// meets the line of the opposite edge of one of its triangles after
-// delta_i = available_push(...), and a step moves it by at most
-// cap * min(delta_1, delta_2, ...), cap = 1 being the thesis' bound (an element
-// would degenerate there only if its other nodes stood still). All front nodes
-// advance by the same fraction of their remaining motion, the tightest node
-// setting it, so the front keeps its shape. After each elasticity solve on the
-// current mesh the result must be certified valid, else the step is halved.
+// The push goes in steps. All front nodes advance by the same fraction of
+// their remaining motion, so the front keeps its shape: cap times the largest
+// fraction at which no triangle with a front node would fold if its other
+// nodes stood still (fold_fraction; for one moving node this is the distance
+// along its path to the opposite edge's line, Fig 4.5a, cap = 1 the thesis'
+// bound), so the thinnest element at the front sizes the step, not a count.
+// Each step is the elastic deformation of curving/deform_mesh.h posed on the
+// triangles within `reach` of the front (its increments halved until every
+// element is certified valid); the push stops short once a step would move
+// less than min_fraction of what is left.
 // After each accepted step, edges flip where that raises the worst radius ratio
 // (edge_flips.h): the triangles keep their number and surface, not their nodes.
 // Once the front is in place, the free nodes whose triangles the push left worse
@@ -24,6 +26,7 @@
 #include "core/mesh.h"
 #include "curving/analogy_formulation.h"
 #include "fem/linear_solver.h"
+#include "layers/clear_room.h"
 
 namespace homesh {
 
@@ -32,11 +35,18 @@ struct RoomOptions {
   /// mesh at every step; "plain" (E = 1, no added terms) is the thesis' choice.
   std::string formulation = "plain";
   FormulationParams params;  ///< nu, added-term scale and power of the analogy
-  double cap = 1;            ///< fraction of min(delta_i) a node may move per step, in (0, 1]
-  int max_steps = 200;       ///< accepted steps before giving up
-  int max_halvings = 8;      ///< halvings of a failing step before giving up
-  bool flips = true;         ///< flip edges after each step (edge_flips.h)
-  bool smoothing = true;     ///< smooth the squeezed free nodes at the end (star_smoothing.h)
+  double cap = 1;            ///< fraction of the folding step a step may take, in (0, 1]
+  /// Solve each step within reach * h of the front (deform_mesh.h's reach);
+  /// 0: on the whole mesh.
+  double reach = 4;
+  double min_fraction = 1e-3;  ///< smallest step, as a fraction of the motion left
+  int max_steps = 500;         ///< accepted steps before giving up
+  int max_halvings = 8;        ///< halvings of a failing step before giving up
+  /// > 0: the free nodes within `clear` times the stack's depth of the wall
+  /// are removed (clear_room.h) as the front comes; 0: pushed ahead of it.
+  double clear = 1.2;
+  bool flips = true;      ///< flip edges after each step (edge_flips.h)
+  bool smoothing = true;  ///< smooth the squeezed free nodes at the end (star_smoothing.h)
   LinearSolverOptions solver;
 };
 
@@ -48,19 +58,25 @@ struct RoomResult {
   int solves = 0;         ///< elasticity solves, rejected ones included
   int bottleneck = -1;    ///< index into `moving` of the node that set the last step
   int smoothed = 0;       ///< node moves of the final smoothing
+  int cleared = 0;        ///< free nodes removed from the room (clear_room.h)
 };
 
-/// delta: how far `node` of m can move along the unit direction d before it
-/// reaches the line through the opposite edge of one of `triangles` (those
-/// around it); +infinity if it moves away from all of them.
-double available_push(const Mesh& m, const std::vector<int>& triangles, int node,
-                      const Eigen::Vector2d& d);
+/// The smallest t > 0 at which triangle x (2 by 3, counter-clockwise) moved to
+/// x + t u turns flat; +infinity if it never does, 0 if x is not
+/// counter-clockwise.
+double fold_fraction(const Eigen::Matrix<double, 2, 3>& x, const Eigen::Matrix<double, 2, 3>& u);
 
 /// Moves nodes moving[k] of the valid linear mesh m to target.col(k) (2 by
 /// #moving) as above; nodes with fixed[i] stay, the rest follow the analogy.
-/// Stops short (complete = false) after max_steps steps or a step halved
-/// max_halvings times. Throws homesh::Error on bad sizes or options.
+/// The final smoothing moves the free nodes whose star quality is below
+/// floor (#nodes; empty: star_quality(m)). Given the room (its front and
+/// target moving and target) and opt.clear > 0, the free nodes in it are
+/// removed (clear_room.h) before the first step and after each one.
+/// Stops short (complete = false) after max_steps steps, a step below
+/// min_fraction or one deform_mesh could not complete. Throws homesh::Error on bad sizes or
+/// options.
 RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen::Matrix2Xd& target,
-                     const std::vector<bool>& fixed, const RoomOptions& opt = {});
+                     const std::vector<bool>& fixed, const RoomOptions& opt = {},
+                     const std::vector<double>& floor = {}, const Room* room = nullptr);
 
 }  // namespace homesh

@@ -24,6 +24,7 @@ const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
 
 struct LayerLog {
   int wall_edges = 0, fans = 0, before = 0, after = 0, corner_triangles = 0;
+  int cleared = 0;  ///< free nodes removed from the room, 2 triangles each
   double corner_q = 0;
 };
 
@@ -34,6 +35,8 @@ LayerLog parse(const std::string& out) {
   REQUIRE(std::regex_search(out, m, std::regex(R"((\d+) wall edges, (\d+) fans)")));
   l.wall_edges = std::stoi(m[1]);
   l.fans = std::stoi(m[2]);
+  REQUIRE(std::regex_search(out, m, std::regex(R"((\d+) free node\(s\) in the room removed)")));
+  l.cleared = std::stoi(m[1]);
   REQUIRE(std::regex_search(out, m, std::regex(R"((\d+) -> (\d+) triangles)")));
   l.before = std::stoi(m[1]);
   l.after = std::stoi(m[2]);
@@ -58,7 +61,7 @@ TEST_CASE("layers: 3 layers around the plate's hole, curved at p = 3, valid (Fig
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
   const LayerLog l = parse(r.output);
   CHECK(l.fans == 0);
-  CHECK(l.after == l.before + 2 * 3 * l.wall_edges);
+  CHECK(l.after == l.before - 2 * l.cleared + 2 * 3 * l.wall_edges);
   // The hole keeps its nodes on the circle; the first layer's corners stand 0.01 off it
   // (times the miter 1 / sin(theta / 2), theta about 191 deg; the curving moves them a little).
   homesh::test::GmshSession session;
@@ -94,7 +97,7 @@ TEST_CASE("layers: 15 layers on NACA-7526 with single normals, curved at p = 3 (
   REQUIRE(r.output.find("thickness 0.0720351") != std::string::npos);
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
   const LayerLog l = parse(r.output);
-  CHECK(l.after == l.before + 2 * 15 * l.wall_edges);
+  CHECK(l.after == l.before - 2 * l.cleared + 2 * 15 * l.wall_edges);
   CHECK(l.corner_triangles == 4 * 15);  // the two wall-edge strips at the trailing edge
 }
 
@@ -116,10 +119,31 @@ TEST_CASE("layers: 5 normals at the trailing edge beat a single one (Figs 4.10, 
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
   const LayerLog multi = parse(r.output);
   CHECK(multi.fans == 1);
-  CHECK(multi.after == single.after + 2 * 4 * (5 - 1));
+  CHECK(multi.after + 2 * multi.cleared == single.after + 2 * single.cleared + 2 * 4 * (5 - 1));
   CHECK(multi.corner_triangles == 4 * 4 + (5 - 1) * (2 * 4 - 1));
   CHECK(single.corner_q < 0.1);
   CHECK(multi.corner_q > 0.3);
+}
+
+TEST_CASE("layers: the README's NACA-7526 stack on a mesh twice as fine opens in few steps",
+          "[app]") {
+  // Factor 0.5: 29 trailing-edge elements under the 0.072 stack. Pushing them all
+  // ahead of the front stalled after 200 steps; the room is cleared of them instead.
+  const auto r = run_homesh(geo +
+                            "naca.geo -m mesh:factor=0.5 -m layers:walls=aerofoil:n=15:"
+                            "first=1e-3:ratio=1.2:normals=multi:fan=5:fan_angle=320");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const LayerLog l = parse(r.output);
+  CHECK(l.fans == 1);
+  CHECK(l.cleared > 1000);  // measured 1737 of 4968 nodes
+  CHECK(l.after == l.before - 2 * l.cleared + 2 * 15 * l.wall_edges + 2 * 15 * 4);
+  std::smatch m;
+  REQUIRE(std::regex_search(r.output, m, std::regex(R"(room opened in (\d+) elastic step)")));
+  CHECK(std::stoi(m[1]) < 20);  // measured 4
+  REQUIRE(std::regex_search(r.output, m, std::regex(R"(of the other triangles: min (\d\.\d+))")));
+  CHECK(std::stod(m[1]) > 0.2);  // measured 0.25
+  CHECK(r.output.find("thinned") == std::string::npos);
 }
 
 TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p = 3, valid",
@@ -135,7 +159,7 @@ TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p =
   REQUIRE(r.output.find("validity: 0 invalid of") != std::string::npos);
   REQUIRE(r.output.find("1 of the walls open") != std::string::npos);
   const LayerLog l = parse(r.output);
-  CHECK(l.after == l.before + 2 * 5 * l.wall_edges);
+  CHECK(l.after == l.before - 2 * l.cleared + 2 * 5 * l.wall_edges);
   std::smatch q;
   REQUIRE(std::regex_search(r.output, q, std::regex(R"(validity: .* worst minJ/maxJ (\d\.\d+))")));
   CHECK(std::stod(q[1]) > 0.98);  // measured 0.9968
@@ -167,10 +191,18 @@ TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p =
 TEST_CASE("layers: refusals name the cause", "[app]") {
   const TempDir dir;
   const std::string out = dir / "refused.msh";
-  auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=5:first=0.1:ratio=1.5 " +
+  // The hole (radius 0.5) is 0.5 from the box: room for 0.4 * 0.5 = 0.2 (0.199 along
+  // the miter of the 32-gon's normals), less than a first layer of 0.3; the stack 1.319 deep of
+  // first = 0.1 is thinned.
+  auto r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=5:first=0.3:ratio=1.5 " +
                       out);
   CHECK(r.exit_code != 0);
-  CHECK(r.output.find("cannot open a room 1.319 thick for 5 layers") != std::string::npos);
+  CHECK(r.output.find("no layer fits at the wall node") != std::string::npos);
+  CHECK(r.output.find("first = 0.099 would fit") != std::string::npos);
+  r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=5:first=0.1:ratio=1.5 " +
+                 out);
+  CHECK(r.exit_code == 0);
+  CHECK(r.output.find("stack thinned to 15 % (0.199 of 1.319)") != std::string::npos);
   r = run_homesh(geo + "plate_hole.geo -m mesh -m layers:walls=wing " + out);
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("no wall 'wing': not a curve physical group (hole, farfield)") !=

@@ -105,3 +105,13 @@ TEST_CASE("progress: curving shows the share of the boundary motion reached", "[
   REQUIRE(r.err.size() >= 4);
   REQUIRE(r.err.substr(r.err.size() - 4) == "\r\033[K");
 }
+
+TEST_CASE("progress: the layers stage shows the room's clearing and push", "[app]") {
+  const Run r = run_apart("HOMESH_PROGRESS=1", "naca.geo",
+                          "-m mesh -m layers:walls=aerofoil:n=15:first=1e-3:ratio=1.2");
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.err.rfind("\rhomesh: stage 2/2 layers | clearing room 0 nodes removed\033[K", 0) == 0);
+  CHECK(r.err.find("| room 0/100 % pushed, step 1") != std::string::npos);
+  REQUIRE(r.err.substr(r.err.size() - 4) == "\r\033[K");
+}

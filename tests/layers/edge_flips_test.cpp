@@ -42,6 +42,13 @@ TEST_CASE("edge flips raise the worst radius ratio and keep count and surfaces",
     CHECK((b - a)(0) * (c - a)(1) - (b - a)(1) * (c - a)(0) > 0);
   }
   CHECK(flip_edges(m) == 0);  // already the better diagonal
+
+  // Restricted to some triangles: only edges shared by two of them flip.
+  Mesh part = quad(1.5);
+  CHECK(flip_edges(part, std::vector<int>{1}) == 0);
+  CHECK(part.tri == quad(1.5).tri);
+  CHECK(flip_edges(part, std::vector<int>{0, 1}) == 1);
+  CHECK(part.tri == m.tri);
 }
 
 TEST_CASE("edge flips leave good diagonals, non-convex quads, surface borders, lines", "[layers]") {

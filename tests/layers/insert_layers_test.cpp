@@ -74,11 +74,14 @@ TEST_CASE("layers around a circular hole: counts, depths, walls kept, valid", "[
   CHECK(r.loops == 1);
   CHECK(r.wall_edges == e);
   CHECK(r.fan_nodes == 0);
+  // The first ring (depth 2 * (1/6)^1.5 = 0.136) lies beyond 1.2 times the
+  // stack's depth 0.095: no node is in the room, none removed.
+  CHECK(r.cleared == 0);
+  CHECK(r.thinned.empty());
   CHECK(b.num_triangles() == m.num_triangles() + 2 * n * e);
   CHECK(b.num_nodes() == m.num_nodes() + n * e);
   CHECK(r.thickness == Approx(0.02 * (1 + 1.5 + 2.25)));
   CHECK(mesh_validity(b).invalid == 0);
-  CHECK(r.push_steps >= 1);
 
   // Each normal line: the wall node, then the interfaces at d_k * scale, radially.
   const auto d = layer_depths(0.02, 1.5, n);
@@ -186,11 +189,72 @@ TEST_CASE("multiple normals beat a single normal at a sharp corner (Eq 4.17)", "
   CHECK(mesh_validity(multi.mesh).invalid == 0);
 }
 
-TEST_CASE("layers refuse an impossible thickness with a clear message", "[layers]") {
+TEST_CASE("layers clear the nodes in the room: counts, walls kept, valid", "[layers]") {
+  // 12 rings graded 1.5 to radius 3: the first three (depths 0.046, 0.13, 0.24)
+  // lie within 1.2 times the stack's 0.21 (n = 6, first 0.02, ratio 1.2).
+  const Mesh m = annulus(3, 12);
+  const int n = 6, e = 32;
+  const LayerResult r = insert_layers(m, test::layer_options({"wall"}, n, 0.02, 1.2));
+  CHECK(r.cleared >= 2 * e);
+  CHECK(r.cleared <= 3 * e);
+  // Each collapse takes the two triangles of an edge with a node.
+  CHECK(r.mesh.num_triangles() == m.num_triangles() - 2 * r.cleared + 2 * n * e);
+  CHECK(r.mesh.num_nodes() == m.num_nodes() - r.cleared + n * e);
+  CHECK(std::count(r.layer.begin(), r.layer.end(), 0) == m.num_triangles() - 2 * r.cleared);
+  CHECK(mesh_validity(r.mesh).invalid == 0);
+  CHECK(r.mesh.line == m.line);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_class[i].dim < 2) CHECK((r.mesh.x.col(i) - m.x.col(i)).norm() == 0);
+
+  // Solved on the whole mesh (reach 0), the removed nodes held: the same room.
+  LayerOptions whole = test::layer_options({"wall"}, n, 0.02, 1.2);
+  whole.room.reach = 0;
+  const LayerResult w = insert_layers(m, whole);
+  CHECK(w.cleared == r.cleared);
+  CHECK(mesh_validity(w.mesh).invalid == 0);
+}
+
+TEST_CASE("layers thin the stack in a narrow gap and say by how much", "[layers]") {
+  // A hole of radius 1 centred at (0.8, 0) in a circle of radius 3: along +x the
+  // gap is 1.2, along -x 2.8. A stack 1 deep (4 layers of 0.25) may take
+  // fill = 0.4 of the gap: 0.48 along +x, where the miter s = 1 / cos(pi / 32)
+  // scales the depth, so the layers there are thinned by 0.48 cos(pi / 32); the
+  // full stack fits along -x.
+  const Mesh m =
+      test::ring_mesh(test::circle(32, 1, Eigen::Vector2d(0.8, 0)), test::circle(32, 3), 8, 1.5);
+  const LayerResult r = insert_layers(m, test::layer_options({"wall"}, 4, 0.25, 1));
+  CHECK(mesh_validity(r.mesh).invalid == 0);
+  REQUIRE(r.thinned.size() == 1);
+  const ThinnedLayers& t = r.thinned[0];
+  CHECK((t.tightest - Eigen::Vector2d(1.8, 0)).norm() < 1e-12);
+  CHECK(t.factor == Approx(0.48 * std::cos(M_PI / 32)).epsilon(1e-12));
+  CHECK(t.gap == Approx(1.2).epsilon(1e-12));
+  CHECK(t.facing == 2);
+  CHECK(t.lines > 1);
+  CHECK(t.lines < 32);
+  for (const LayerLine& line : r.lines) {
+    const Eigen::Vector2d w = r.mesh.x.col(line.wall_node);
+    const double depth = (r.mesh.x.col(line.nodes.back()) - w).norm();
+    if ((w - Eigen::Vector2d(1.8, 0)).norm() < 1e-12) CHECK(depth == Approx(0.48).epsilon(1e-12));
+    if ((w - Eigen::Vector2d(-0.2, 0)).norm() < 1e-12)
+      CHECK(depth == Approx(1 / std::cos(M_PI / 32)).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("layers refuse at once where not even the first layer fits", "[layers]") {
+  // Gap 0.5 between the circles of radius 1 and 1.5: room for 0.4 * 0.5 = 0.2,
+  // less than a first layer of 0.25 (times the miter 1 / cos(pi / 32)).
   const Mesh m = annulus(1.5, 3);
-  CHECK_THROWS_WITH(insert_layers(m, test::layer_options({"wall"}, 6, 0.1, 1)),
-                    Catch::Contains("cannot open a room 0.6 thick for 6 layers") &&
-                        Catch::Contains("use fewer or thinner layers"));
+  CHECK_THROWS_WITH(insert_layers(m, test::layer_options({"wall"}, 1, 0.25, 1)),
+                    Catch::Contains("no layer fits at the wall node") &&
+                        Catch::Contains("curve 2 is 0.5 away") &&
+                        Catch::Contains("first = 0.099 would fit"));
+  // A stack of 6 x 0.1 = 0.6 is thinned to 0.2 all round instead.
+  const LayerResult r = insert_layers(m, test::layer_options({"wall"}, 6, 0.1, 1));
+  REQUIRE(r.thinned.size() == 1);
+  CHECK(r.thinned[0].lines == 32);
+  CHECK(r.thinned[0].factor == Approx(0.2 / 0.6 * std::cos(M_PI / 32)).epsilon(1e-12));
+  CHECK(mesh_validity(r.mesh).invalid == 0);
   CHECK_THROWS_WITH(insert_layers(m, test::layer_options({"hull"}, 3, 0.01, 1.2)),
                     Catch::Contains("no wall 'hull'"));
   LayerOptions o = test::layer_options({"wall"}, 3, 0.01, 1.2);

@@ -11,18 +11,28 @@
 
 using namespace homesh;
 
-TEST_CASE("available push: distance along d to the opposite edge's line (Fig 4.5a)", "[layers]") {
-  Mesh m;
-  m.x.resize(2, 3);
-  m.x << 0, 1, 0,  //
+TEST_CASE("fold fraction: when a moving triangle turns flat (Fig 4.5a)", "[layers]") {
+  Eigen::Matrix<double, 2, 3> x, u;
+  x << 0, 1, 0,  //
       0, 0, 1;
-  m.tri.resize(3, 1);
-  m.tri << 0, 1, 2;
-  CHECK(available_push(m, {0}, 0, Eigen::Vector2d(1, 1).normalized()) == Approx(std::sqrt(0.5)));
-  CHECK(available_push(m, {0}, 0, Eigen::Vector2d(1, 0)) == Approx(1));
-  CHECK(available_push(m, {0}, 0, Eigen::Vector2d(-1, 0)) ==
+  // One node moving: the distance along its path to the opposite edge's line.
+  u << 1, 0, 0,  //
+      1, 0, 0;
+  CHECK(fold_fraction(x, u) == Approx(0.5));
+  u << -1, 0, 0,  //
+      0, 0, 0;
+  CHECK(fold_fraction(x, u) == std::numeric_limits<double>::infinity());
+  // Two nodes moving (quadratic in t): node 1 to (1 - t, 0), node 2 to (0, 1 - t)
+  // shrink the triangle to its corner only at t = 1.
+  u << 0, -1, 0,  //
+      0, 0, -1;
+  CHECK(fold_fraction(x, u) == Approx(1));
+  // Node 1 swept across the line of the others: flat at t = 1/2 (x = 0).
+  u << 0, -2, 0,  //
+      0, 0, 0;
+  CHECK(fold_fraction(x, u) == Approx(0.5));
+  CHECK(fold_fraction(x, Eigen::Matrix<double, 2, 3>::Zero()) ==
         std::numeric_limits<double>::infinity());
-  CHECK(available_push(m, {0}, 1, Eigen::Vector2d(-1, 0)) == Approx(1));
 }
 
 TEST_CASE("open room: the front of a circular hole pushed radially, capped, valid", "[layers]") {

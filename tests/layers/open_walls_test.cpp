@@ -131,6 +131,29 @@ TEST_CASE("layers on the floor of a channel end on the inlet and outlet", "[laye
   }
 }
 
+TEST_CASE("an open wall's ends thin where the boundary's first edge is short", "[layers]") {
+  // The inlet's and outlet's first edges are 1/6 high: the end normals slide along
+  // them and may take 0.4 / 6 of the stack's 0.2 (4 x 0.05), a third, tapering
+  // back to the full stack within two wall edges.
+  const Mesh m = channel();
+  const LayerResult r = insert_layers(m, test::layer_options({"wall"}, 4, 0.05, 1));
+  CHECK(mesh_validity(r.mesh).invalid == 0);
+  REQUIRE(r.thinned.size() == 2);
+  for (const ThinnedLayers& t : r.thinned) {
+    CHECK(t.factor == Approx(1.0 / 3).epsilon(1e-12));
+    CHECK(t.gap == Approx(1.0 / 6).epsilon(1e-12));
+    CHECK((t.tightest(0) == 0 || t.tightest(0) == 4));
+    CHECK(t.tightest(1) == 0);
+    CHECK(t.lines == 2);
+  }
+  for (const LayerLine& line : r.lines) {
+    const Eigen::Vector2d w = r.mesh.x.col(line.wall_node);
+    const double depth = r.mesh.x(1, line.nodes.back());
+    if (w(0) == 0 || w(0) == 4) CHECK(depth == Approx(0.4 / 6).epsilon(1e-12));
+    if (w(0) == 2) CHECK(depth == Approx(0.2).epsilon(1e-12));
+  }
+}
+
 TEST_CASE("layers on the floor and ceiling of a channel: two open walls", "[layers]") {
   const Mesh m = channel();
   const int n = 5, e = 16;

@@ -42,10 +42,23 @@ void run(Context& ctx, const LayerOptions& o) {
         "layers: {} of the walls open: their layers end along the boundary curves at "
         "their ends, whose lines are split at the layer nodes",
         r.open_walls);
+  const int shown = 5;
+  for (std::size_t i = 0; i < r.thinned.size() && i < shown; ++i) {
+    const ThinnedLayers& t = r.thinned[i];
+    ctx.log.warn(
+        "layers: stack thinned to {:.0f} % ({:.4g} of {:.4g}) at ({:.6g}, {:.6g}) on curve {}, "
+        "where curve {} is {:.4g} away along the normal (fill = {:g}); {} normal(s) thinned "
+        "from ({:.6g}, {:.6g}) to ({:.6g}, {:.6g})",
+        100 * t.factor, t.factor * r.thickness, r.thickness, t.tightest(0), t.tightest(1), t.curve,
+        t.facing, t.gap, o.fill, t.lines, t.from(0), t.from(1), t.to(0), t.to(1));
+  }
+  if (r.thinned.size() > shown)
+    ctx.log.warn("layers: stack thinned at {} more place(s)", r.thinned.size() - shown);
   ctx.log.info(
-      "layers: room opened in {} elastic step(s) (formulation {}, nu {:g}), {} node "
-      "move(s) smoothing squeezed triangles; {} -> {} triangles, {} -> {} nodes",
-      r.push_steps, o.room.formulation, o.room.params.poisson, r.smoothed, triangles,
+      "layers: room opened in {} elastic step(s) (formulation {}, nu {:g}), {} free node(s) "
+      "in the room removed, {} node move(s) smoothing squeezed triangles; {} -> {} "
+      "triangles, {} -> {} nodes",
+      r.push_steps, o.room.formulation, o.room.params.poisson, r.cleared, r.smoothed, triangles,
       m.num_triangles(), nodes, m.num_nodes());
   double worst = 1, sum = 0, others = 1;
   int count = 0;
@@ -94,6 +107,10 @@ Stage layers_stage() {
         "thickness of the layer at the wall");
   t.add("ratio", &LayerOptions::ratio, real(0, INFINITY, "(]"),
         "thickness ratio of consecutive layers");
+  t.add("fill", &LayerOptions::fill, real(0, 1, "(]"),
+        "largest fraction of the distance along a normal to the nearest other boundary the "
+        "stack may take: thinner layers where it would take more (gaps, slots, concave "
+        "corners), with a warning");
   t.add(
       "normals", [](LayerOptions& o) -> bool& { return o.normals.multi; },
       choice<bool>({{"single", false}, {"multi", true}}),
@@ -116,8 +133,10 @@ Stage layers_stage() {
                            : "";
   });
   return make_stage<LayerOptions>(
-      "layers", "boundary layers on walls: room opened by the elastic analogy, geometric layers", t,
-      run);
+      "layers",
+      "boundary layers on walls: room cleared and opened by the elastic analogy, geometric "
+      "layers, thinned where walls are close",
+      t, run);
 }
 
 }  // namespace homesh
