@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/mesh.h"
-#include "voronoi/seeded_boundary.h"
+#include "voronoi/seeding/seeded_boundary.h"
 
 namespace homesh::gmsh_adapter {
 

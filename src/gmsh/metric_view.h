@@ -1,11 +1,11 @@
 #pragma once
 // A metric field read from a Gmsh post-processing view holding a tensor field
 // (Gmsh's convention for anisotropic background meshes, the one of
-// voronoi/metric_field.h: |v|_M = sqrt(v^T M v), eigenvalues 1/h^2).
+// voronoi/metric/metric_field.h: |v|_M = sqrt(v^T M v), eigenvalues 1/h^2).
 #include <string>
 
-#include "voronoi/cartesian_grid.h"
-#include "voronoi/metric_field.h"
+#include "voronoi/grid/cartesian_grid.h"
+#include "voronoi/metric/metric_field.h"
 
 namespace homesh::gmsh_adapter {
 

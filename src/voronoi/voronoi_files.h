@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/metric_field.h"
+#include "voronoi/metric/metric_field.h"
 
 namespace homesh {
 

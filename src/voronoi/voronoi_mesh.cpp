@@ -12,13 +12,13 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "layers/edge_flips.h"
-#include "voronoi/boundary_encroachment.h"
-#include "voronoi/conforming_dual.h"
-#include "voronoi/loop_distance.h"
-#include "voronoi/metric_smoothing.h"
-#include "voronoi/refine_dual.h"
-#include "voronoi/valence_three.h"
-#include "voronoi/window_regrowth.h"
+#include "voronoi/cleanup/metric_smoothing.h"
+#include "voronoi/cleanup/valence_three.h"
+#include "voronoi/dual/conforming_dual.h"
+#include "voronoi/dual/refine_dual.h"
+#include "voronoi/dual/window_regrowth.h"
+#include "voronoi/grid/loop_distance.h"
+#include "voronoi/seeding/boundary_encroachment.h"
 
 namespace homesh {
 namespace {

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "core/mesh.h"
-#include "voronoi/cartesian_grid.h"
-#include "voronoi/lloyd_relaxation.h"
-#include "voronoi/metric_field.h"
-#include "voronoi/metric_seeding.h"
-#include "voronoi/seeded_boundary.h"
+#include "voronoi/grid/cartesian_grid.h"
+#include "voronoi/metric/metric_field.h"
+#include "voronoi/seeding/lloyd_relaxation.h"
+#include "voronoi/seeding/metric_seeding.h"
+#include "voronoi/seeding/seeded_boundary.h"
 #include "voronoi/voronoi_files.h"
 
 namespace homesh {
@@ -23,9 +23,9 @@ namespace homesh {
 struct VoronoiMeshOptions {
   SeedingOptions seeding;  ///< automatic seeds: front rows, Poisson-disc
   LloydOptions lloyd;      ///< on the automatic seeds (front rows held)
-  int smooth = 3;          ///< smoothing sweeps (voronoi/metric_smoothing.h)
+  int smooth = 3;          ///< smoothing sweeps (voronoi/cleanup/metric_smoothing.h)
   /// Topological clean-up of the dual: interior nodes of three triangles
-  /// removed (voronoi/valence_three.h), edges flipped where that raises the
+  /// removed (voronoi/cleanup/valence_three.h), edges flipped where that raises the
   /// worst mean ratio (Q11) in the metric, after the smoothing.
   bool cleanup = true;
   std::string engine = "fast_marching";  ///< a name of voronoi_engines()

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/loop_distance.h"
-#include "voronoi/voronoi_problem.h"
+#include "voronoi/engines/voronoi_problem.h"
+#include "voronoi/grid/loop_distance.h"
 #include "voronoi_test_support.h"
 
 namespace homesh::test {

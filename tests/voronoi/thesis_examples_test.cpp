@@ -6,8 +6,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "voronoi/refine_dual.h"
-#include "voronoi/voronoi_delaunay.h"
+#include "voronoi/dual/refine_dual.h"
+#include "voronoi/dual/voronoi_delaunay.h"
 
 using namespace homesh;
 

@@ -28,10 +28,10 @@
 #include <vector>
 
 #include "thesis_examples.h"
-#include "voronoi/cgal_delaunay.h"
-#include "voronoi/refine_dual.h"
-#include "voronoi/voronoi_delaunay.h"
-#include "voronoi/voronoi_engines.h"
+#include "voronoi/dual/cgal_delaunay.h"
+#include "voronoi/dual/refine_dual.h"
+#include "voronoi/dual/voronoi_delaunay.h"
+#include "voronoi/engines/voronoi_engines.h"
 #include "voronoi_test_support.h"
 
 using namespace homesh;

@@ -13,10 +13,10 @@
 #include <set>
 #include <vector>
 
-#include "voronoi/cgal_delaunay.h"
-#include "voronoi/dual_triangulation.h"
-#include "voronoi/loop_distance.h"
-#include "voronoi/metric_field.h"
+#include "voronoi/dual/cgal_delaunay.h"
+#include "voronoi/dual/dual_triangulation.h"
+#include "voronoi/grid/loop_distance.h"
+#include "voronoi/metric/metric_field.h"
 
 namespace homesh::test {
 

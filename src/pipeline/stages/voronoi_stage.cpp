@@ -11,9 +11,9 @@
 #include "gmsh/gmsh_call.h"
 #include "gmsh/metric_view.h"
 #include "pipeline/stages/mesh_stage.h"
-#include "voronoi/curve_division.h"
-#include "voronoi/size_metric.h"
-#include "voronoi/voronoi_engines.h"
+#include "voronoi/engines/voronoi_engines.h"
+#include "voronoi/metric/size_metric.h"
+#include "voronoi/seeding/curve_division.h"
 #include "voronoi/voronoi_files.h"
 #include "voronoi/voronoi_mesh.h"
 

@@ -1,0 +1,122 @@
+#include "voronoi/cleanup/metric_smoothing.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace homesh {
+namespace {
+
+constexpr double kPoor = 0.8;              // below this worst quality, the compass search too
+constexpr int kSearchSteps = 24;           // compass search: at most this many steps
+constexpr double kSearchTolerance = 1e-3;  // and until the step is this fraction of the first
+
+}  // namespace
+
+double metric_mean_ratio(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                         const Eigen::Vector2d& c, const Eigen::Matrix2d& M) {
+  const Eigen::Vector2d u = b - a, v = c - a, w = c - b;
+  const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
+  const double edges = u.dot(M * u) + v.dot(M * v) + w.dot(M * w);
+  return edges > 0.0 ? 4.0 * std::sqrt(3.0) * area * std::sqrt(M.determinant()) / edges : 0.0;
+}
+
+int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
+                      const std::vector<char>& free_node, const MetricField& metric, int sweeps) {
+  const Eigen::Index n = x.cols();
+  // The triangles round each node, as the other two corners counter-clockwise.
+  std::vector<std::vector<std::array<int, 2>>> star(static_cast<std::size_t>(n));
+  for (Eigen::Index t = 0; t < tri.cols(); ++t)
+    for (int k = 0; k < 3; ++k)
+      star[tri(k, t)].push_back({tri((k + 1) % 3, t), tri((k + 2) % 3, t)});
+  // Worst quality of v's triangles with v at p, and the sum of their
+  // inverse qualities (infinite once one folds or degenerates).
+  struct Patch {
+    double worst, inverse;
+  };
+  const auto patch = [&](const std::vector<std::array<int, 2>>& s, const Eigen::Vector2d& p,
+                         const Eigen::Matrix2d& M) {
+    Patch out{std::numeric_limits<double>::infinity(), 0.0};
+    for (const auto& [a, b] : s) {
+      const double q = metric_mean_ratio(p, x.col(a), x.col(b), M);
+      out.worst = std::min(out.worst, q);
+      out.inverse += q > 0.0 ? 1.0 / q : std::numeric_limits<double>::infinity();
+    }
+    return out;
+  };
+  // Compass search from `to`: the 8 steps of length h round the best point so
+  // far, h halved on failure, until h is `stop` or kSearchSteps halvings.
+  const auto compass = [&](const std::vector<std::array<int, 2>>& s, const Eigen::Matrix2d& M,
+                           double h, Eigen::Vector2d& to, Patch& best, auto better) {
+    const double stop = h * kSearchTolerance;
+    for (int k = 0; k < kSearchSteps && h > stop; ++k) {
+      bool moved = false;
+      for (int d = 0; d < 8; ++d) {
+        const Eigen::Vector2d c =
+            to + h * Eigen::Vector2d(std::cos(M_PI * d / 4), std::sin(M_PI * d / 4));
+        const Patch q = patch(s, c, M);
+        if (better(q, best)) {
+          best = q;
+          to = c;
+          moved = true;
+        }
+      }
+      if (!moved) h *= 0.5;
+    }
+  };
+  int moves = 0;
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+    for (Eigen::Index v = 0; v < n; ++v) {
+      const auto& s = star[v];
+      if (!free_node[v] || s.empty()) continue;
+      const Eigen::Vector2d p = x.col(v);
+      const Eigen::Matrix2d M = metric.metric_at(p);
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(M);
+      const Eigen::Matrix2d root = eig.operatorSqrt(), root_inv = eig.operatorInverseSqrt();
+      Eigen::Matrix2d R;
+      R << 0, -1, 1, 0;
+      const Eigen::Matrix2d turn = 0.5 * std::sqrt(3.0) * root_inv * R * root;
+      Eigen::Vector2d laplace = Eigen::Vector2d::Zero(), apex = Eigen::Vector2d::Zero();
+      for (const auto& [a, b] : s) {
+        // Each neighbour appears in two triangles of an interior star.
+        laplace += 0.5 * (x.col(a) + x.col(b));
+        apex += 0.5 * (x.col(a) + x.col(b)) + turn * (x.col(b) - x.col(a));
+      }
+      laplace /= static_cast<double>(s.size());
+      apex /= static_cast<double>(s.size());
+      Patch best = patch(s, p, M);
+      // No worse worst triangle, and a smaller sum of inverse qualities.
+      const auto smaller_sum = [](double floor) {
+        return [floor](const Patch& q, const Patch& b) {
+          return q.worst >= floor && q.inverse < b.inverse * (1 - 1e-12);
+        };
+      };
+      Eigen::Vector2d to = p;
+      for (const Eigen::Vector2d& c : {laplace, apex}) {
+        const Patch q = patch(s, c, M);
+        if (smaller_sum(best.worst)(q, best)) {
+          best = q;
+          to = c;
+        }
+      }
+      const double h = 0.25 * std::sqrt((x.col(s.front()[0]) - p).squaredNorm());
+      // Where the worst triangle stays poor, raise it first.
+      if (best.worst < kPoor)
+        compass(s, M, h, to, best,
+                [](const Patch& q, const Patch& b) { return q.worst > b.worst + 1e-12; });
+      // Then the sum of inverse qualities (Knupp's inverse mean ratio), the
+      // worst triangle kept no worse: the star's optimum, where the fixed
+      // candidates above only come near it.
+      compass(s, M, h, to, best, smaller_sum(best.worst));
+      if (to != p) {
+        x.col(v) = to;
+        ++moves;
+      }
+    }
+  return moves;
+}
+
+}  // namespace homesh

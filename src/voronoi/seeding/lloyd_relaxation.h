@@ -1,0 +1,52 @@
+#pragma once
+// Lloyd's iteration on the crystal regions: each free seed moves to the
+// centroid of its grown region, the crystals grow again, a few times. Its
+// fixed points are centroidal Voronoi tessellations (Du, Faber, Gunzburger,
+// "Centroidal Voronoi tessellations: applications and algorithms", SIAM
+// Review 41(4), 1999), whose dual triangles are close to equilateral in the
+// metric; the Poisson-disc seeds of metric_seeding.h are only well spaced.
+//
+// Anisotropic centroid (after Du & Wang, "Anisotropic centroidal Voronoi
+// tessellations and their applications", SIAM J Sci Comput 26(3), 2005,
+// with the distance measured in the metric at the point x): the z that
+// minimises the region's energy  sum_x (x - z)^T M(x) (x - z) dA  over its
+// grid nodes x is
+//
+//   z = (sum_x M(x))^-1  sum_x M(x) x,
+//
+// the plain centroid in a constant metric, weighted by 1/h^2 in the
+// isotropic metric M = I / h^2 of a size field h.
+#include <Eigen/Core>
+#include <string>
+
+#include "voronoi/engines/voronoi_problem.h"
+
+namespace homesh {
+
+/// The centroids above of the regions of seeds 0..seeds-1 in `labels`
+/// (grid.node_count() crystal ids, -1: none), each region in the metric it
+/// grew in (seed_metrics[s] if not empty, else metric). 2 by seeds; NaN for
+/// a seed with no node.
+Eigen::Matrix2Xd region_centroids(const CartesianGrid& grid, const Eigen::VectorXi& labels,
+                                  int seeds, const MetricField& metric,
+                                  const std::vector<Eigen::Matrix2d>& seed_metrics = {});
+
+struct LloydOptions {
+  int iterations = 10;  ///< growths and moves
+  /// A seed moves only if its centroid is this many cells (ds) inside the
+  /// domain and from every other seed; otherwise it stays.
+  double clearance_cells = 2.0;
+};
+
+/// Seeds 0..fixed-1 of `problem` (the boundary seeds) stay, and so does
+/// every seed s with held[s] != 0 (held empty or one flag per seed, e.g. the
+/// seeds too close together for the grid to give their regions' centroids);
+/// the others move to region_centroids of the crystals grown by `engine`,
+/// options.iterations times. Returns all the seeds (2 by S, in the
+/// problem's order).
+Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed,
+                                  const std::string& engine = "fast_marching",
+                                  const LloydOptions& options = {},
+                                  const std::vector<char>& held = {});
+
+}  // namespace homesh
