@@ -41,22 +41,20 @@ struct CurveOptions {
   double accept_placed = 0.9;
   /// Step 3 on or off.
   bool optimise = true;
-  /// Step 3's optimiser: OptimiseOptions' defaults (threshold 0.8, wall nodes sliding)
-  /// but free interior vertices and 60 sweeps. Measured on issue 16's corpus
-  /// (scripts/bench/README.md), worst minJ/maxJ after curving, ellipse10_bl_1e-4 p = 2 /
-  /// naca0012_bl_1e-3_coarse p = 4: solve alone 0.06 / 0.13; optimised with the wall
-  /// held, 20 sweeps: 0.64 / - (vertices held), 0.66 / 0.54 (free); wall sliding 0.71 /
-  /// 0.69; 60 sweeps 0.78 / 0.81 (200: 0.85 / 0.84 at 3x the time). The node-by-node sweeps
-  /// converge slowly in thin layers: each sweep moves a node within its own star only.
+  /// Step 3's optimiser: OptimiseOptions' defaults (threshold 0.8, wall nodes sliding,
+  /// whole-patch Newton steps, no node-by-node sweeps) but free interior vertices.
+  /// Measured on issue 16's corpus (scripts/bench/README.md), worst minJ/maxJ after
+  /// curving, ellipse10_bl_1e-4 p = 2 / naca0012_bl_1e-3_coarse p = 4: solve alone 0.06 /
+  /// 0.13; node-by-node sweeps with the wall held, 20 sweeps: 0.64 / - (vertices held),
+  /// 0.66 / 0.54 (free); wall sliding 0.71 / 0.69; 60 sweeps 0.78 / 0.81 (200: 0.85 /
+  /// 0.84 at 3x the time); whole-patch Newton steps 0.89 / 0.93 in a tenth of that time.
   /// Most passes of the optimiser from one solve: another pass (from where the last
   /// stopped) while elements stay below the threshold and the last pass lifted the worst
-  /// by 0.02 or more. naca0012_bl_1e-3_coarse p = 3: 0.72 after one pass of 60 sweeps,
-  /// 0.84 after 200 sweeps.
+  /// by 0.02 or more.
   int optimise_passes = 3;
   OptimiseOptions optimiser = [] {
     OptimiseOptions o;
     o.free_vertices = true;
-    o.max_sweeps = 60;
     return o;
   }();
 };

@@ -11,6 +11,9 @@
 #include "core/error.h"
 #include "curving/deform_mesh.h"
 #include "curving/optimisation_patches.h"
+#include "curving/patch_newton.h"
+#include "element/lagrange_basis.h"
+#include "element/reference_nodes.h"
 #include "fem/element_tabulation.h"
 #include "quality/ideal_jacobian.h"
 #include "quality/mesh_validity.h"
@@ -22,21 +25,12 @@ constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
 constexpr int kMaxHalvings = 20;
 constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
 
-// Nodes sliding along curves: slide_tag[i] the curve of node i (-1: not sliding),
-// u[i] its parameter, kept unwrapped on closed curves while optimising.
-struct Sliding {
-  const CurveEvaluator* curves = nullptr;
-  std::vector<int> tag;
-  std::vector<double> u;
-  std::vector<CurveRange> range;  // of tag[i]'s curve
-};
-
 // One patch being optimised on the shared coordinates x (its free nodes are its own).
 class PatchOptimiser {
  public:
   // floor: the patch's worst certified minJ/maxJ at the start, which no step may
   // take an element below.
-  PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, Sliding& sliding,
+  PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, SlidingNodes& sliding,
                  const OptimisationPatch& patch, const ElementTabulation& tab,
                  const OptimiseOptions& opt, double floor)
       : m_(m), x_(x), sliding_(sliding), patch_(patch), tab_(tab), opt_(opt), floor_(floor) {
@@ -68,6 +62,8 @@ class PatchOptimiser {
         if (it != free.end() && *it == node) star_[it - free.begin()].push_back({le, k});
       }
   }
+
+  const std::vector<Eigen::Matrix2d>& targets() const { return target_; }
 
   double total_energy() {
     double E = 0;
@@ -259,7 +255,7 @@ class PatchOptimiser {
 
   const Mesh& m_;
   Eigen::Matrix2Xd& x_;
-  Sliding& sliding_;
+  SlidingNodes& sliding_;
   const OptimisationPatch& patch_;
   const ElementTabulation& tab_;
   const OptimiseOptions& opt_;
@@ -282,9 +278,33 @@ double certified_ratio(const Mesh& m, const Eigen::Matrix2Xd& x, int e, const Bo
   return jb.valid_certified ? scaled_jacobian_ratio(jb) : -std::numeric_limits<double>::infinity();
 }
 
+// The energy's points: the Gauss rule of `degree`, and with lattice_weight > 0 also the
+// nodes of the order 2 (p - 1) lattice (where det J's Bezier coefficients live, corners
+// and edges included), the rule's weights scaled by 1 - lattice_weight and the lattice
+// sharing lattice_weight of the area equally.
+ElementTabulation energy_tabulation(int order, int degree, double lattice_weight) {
+  ElementTabulation tab = tabulate_element(order, degree);
+  if (!(lattice_weight > 0)) return tab;
+  const LagrangeBasis basis(order);
+  const Eigen::Matrix2Xd lattice = reference_nodes(2 * (order - 1));
+  const int q = static_cast<int>(tab.rule.weights.size()), l = static_cast<int>(lattice.cols());
+  const double area = tab.rule.weights.sum();
+  QuadratureRule rule;
+  rule.points.resize(2, q + l);
+  rule.points << tab.rule.points, lattice;
+  rule.weights.resize(q + l);
+  rule.weights << (1 - lattice_weight) * tab.rule.weights,
+      Eigen::VectorXd::Constant(l, lattice_weight * area / l);
+  tab.rule = rule;
+  tab.N = basis.tabulate_values(rule.points);
+  basis.tabulate_gradients(rule.points, tab.dNdu, tab.dNdv);
+  return tab;
+}
+
 struct PatchOutcome {
   bool accepted = false;
   int sweeps = 0;
+  int newton = 0;
   double energy_before = 0, energy_after = 0;
 };
 
@@ -318,7 +338,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   // Sliding: nodes on a curve the evaluator slides, not fixed by the caller, and not
   // vertices unless opt.slide says so.
   const std::vector<bool> vertex = vertex_nodes(m);
-  Sliding sliding;
+  SlidingNodes sliding;
   sliding.curves = curves;
   sliding.tag.assign(m.num_nodes(), -1);
   sliding.u.assign(m.num_nodes(), 0.0);
@@ -345,8 +365,8 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
       for (int k = 0; k < m.tri.rows(); ++k) held[m.tri(k, e)] = true;
   const std::vector<OptimisationPatch> patches = optimisation_patches(m, poor, opt.layers, held);
   res.patches = static_cast<int>(patches.size());
-  const ElementTabulation tab =
-      tabulate_element(m.order, opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order);
+  const ElementTabulation tab = energy_tabulation(
+      m.order, opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order, opt.lattice_weight);
 
   Eigen::Matrix2Xd& x = res.mesh.x;
   std::vector<PatchOutcome> outcome(patches.size());
@@ -369,7 +389,21 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     }
     PatchOptimiser po(m, x, sliding, patch, tab, opt, worst);
     PatchOutcome& o = outcome[k];
-    double E = o.energy_before = po.total_energy();
+    o.energy_before = po.total_energy();
+    if (opt.newton_iterations > 0) {
+      PatchProblem problem;
+      problem.mesh = &m;
+      problem.elements = &patch.elements;
+      problem.free_nodes = &patch.free_nodes;
+      problem.targets = &po.targets();
+      problem.tab = &tab;
+      problem.energy = opt.energy;
+      problem.bounds = opt.bounds;
+      problem.floor = worst;
+      o.newton =
+          patch_newton(problem, x, sliding, opt.newton_iterations, opt.newton_tolerance).iterations;
+    }
+    double E = po.total_energy();
     while (o.sweeps < opt.max_sweeps) {
       const double next = po.sweep();
       ++o.sweeps;
@@ -399,6 +433,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   for (std::size_t k = 0; k < patches.size(); ++k) {
     const PatchOutcome& o = outcome[k];
     res.sweeps += o.sweeps;
+    res.newton_steps += o.newton;
     if (!o.accepted) continue;
     ++res.accepted;
     res.moved_nodes += static_cast<int>(patches[k].free_nodes.size());
