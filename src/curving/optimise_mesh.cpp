@@ -12,8 +12,6 @@
 #include "curving/deform_mesh.h"
 #include "curving/optimisation_patches.h"
 #include "curving/patch_newton.h"
-#include "element/lagrange_basis.h"
-#include "element/reference_nodes.h"
 #include "fem/element_tabulation.h"
 #include "quality/ideal_jacobian.h"
 #include "quality/mesh_validity.h"
@@ -278,29 +276,6 @@ double certified_ratio(const Mesh& m, const Eigen::Matrix2Xd& x, int e, const Bo
   return jb.valid_certified ? scaled_jacobian_ratio(jb) : -std::numeric_limits<double>::infinity();
 }
 
-// The energy's points: the Gauss rule of `degree`, and with lattice_weight > 0 also the
-// nodes of the order 2 (p - 1) lattice (where det J's Bezier coefficients live, corners
-// and edges included), the rule's weights scaled by 1 - lattice_weight and the lattice
-// sharing lattice_weight of the area equally.
-ElementTabulation energy_tabulation(int order, int degree, double lattice_weight) {
-  ElementTabulation tab = tabulate_element(order, degree);
-  if (!(lattice_weight > 0)) return tab;
-  const LagrangeBasis basis(order);
-  const Eigen::Matrix2Xd lattice = reference_nodes(2 * (order - 1));
-  const int q = static_cast<int>(tab.rule.weights.size()), l = static_cast<int>(lattice.cols());
-  const double area = tab.rule.weights.sum();
-  QuadratureRule rule;
-  rule.points.resize(2, q + l);
-  rule.points << tab.rule.points, lattice;
-  rule.weights.resize(q + l);
-  rule.weights << (1 - lattice_weight) * tab.rule.weights,
-      Eigen::VectorXd::Constant(l, lattice_weight * area / l);
-  tab.rule = rule;
-  tab.N = basis.tabulate_values(rule.points);
-  basis.tabulate_gradients(rule.points, tab.dNdu, tab.dNdv);
-  return tab;
-}
-
 struct PatchOutcome {
   bool accepted = false;
   int sweeps = 0;
@@ -365,7 +340,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
       for (int k = 0; k < m.tri.rows(); ++k) held[m.tri(k, e)] = true;
   const std::vector<OptimisationPatch> patches = optimisation_patches(m, poor, opt.layers, held);
   res.patches = static_cast<int>(patches.size());
-  const ElementTabulation tab = energy_tabulation(
+  const ElementTabulation tab = tabulate_element_and_lattice(
       m.order, opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order, opt.lattice_weight);
 
   Eigen::Matrix2Xd& x = res.mesh.x;
