@@ -65,7 +65,8 @@ struct CurveResult {
   bool placed = false;            ///< step 1 sufficed: no solve, no optimisation
   double placed_worst = 0;        ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
   DeformResult deform;            ///< of the last solve (if any)
-  bool fell_back = false;         ///< the restricted solve fell short: the whole mesh was solved
+  bool fell_back = false;         ///< the restricted solve fell short: solved with vertices free
+  bool fell_back_whole = false;   ///< and that on the whole mesh (the region's fell short too)
   double restricted_reached = 0;  ///< the restricted solve's reached fraction, if it fell back
   bool freed_vertices = false;    ///< the result comes from step 3's solve with vertices free
   bool optimised = false;         ///< step 3 ran
