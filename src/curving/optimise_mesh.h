@@ -9,7 +9,12 @@
 // 2. Patches: the poor elements grown by `layers` rings of neighbours, split
 //    into pieces that share no free node (curving/optimisation_patches.h;
 //    Toulorge, Geuzaine, Remacle & Lambrechts, JCP 254, 2013, Sec 4).
-// 3. On each patch, node-by-node sweeps (Turner, Peiro & Moxey, "Curvilinear
+// 3. On each patch, up to `newton_iterations` whole-patch Newton steps
+//    (curving/patch_newton.h: every free node at once, a sparse damped Newton
+//    system, each step backtracked until the energy drops and every moved
+//    element is certified valid with minJ/maxJ at least the patch's worst at
+//    the start), then up to `max_sweeps` node-by-node sweeps (0 by default;
+//    Turner, Peiro & Moxey, "Curvilinear
 //    mesh generation using a variational framework", CAD 103, 2018, Sec 4;
 //    NekMesh's varopti): each free node takes a Newton step on the summed
 //    energy of the elements around it, the 2 by 2 Hessian from differences of

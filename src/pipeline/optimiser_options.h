@@ -23,9 +23,6 @@ void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
       "newton", [o](T& t) -> int& { return o(t).newton_iterations; }, integer(0, 10000),
       "most whole-patch Newton steps per patch, before the sweeps (0: sweeps only)");
   table.add(
-      "rings", [o](T& t) -> int& { return o(t).layers; }, integer(0, 100),
-      "rings of neighbours added round the poor elements to make the patches");
-  table.add(
       "lattice", [o](T& t) -> double& { return o(t).lattice_weight; }, real(0, 1, "[)"),
       "share of the energy's weight on the order 2(p-1) lattice (corners and edges)");
   table.add(
