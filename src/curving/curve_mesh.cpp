@@ -23,7 +23,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   Eigen::Matrix2Xd target = place(raised);
   const std::vector<bool> boundary = boundary_nodes(raised);
   CurveResult r;
-  std::vector<int> local_region;  // step 1's poor elements and their rings (if valid)
+  std::vector<int> local_region;  // step 1's poor elements and their rings
 
   // 1. Placed: the boundary nodes at their targets, the interior straight.
   if (opt.accept_placed <= 1) {
@@ -39,8 +39,8 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
       r.seconds = since(start);
       return r;
     }
-    // Valid but poor somewhere: step 2 first solves only round the poor elements.
-    if (v.invalid == 0 && opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order) {
+    // Poor or invalid somewhere: step 2 first solves only round those elements.
+    if (opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order) {
       std::vector<bool> poor_nodes(placed.num_nodes(), false);
       for (int e = 0; e < placed.num_triangles(); ++e)
         if (v.ratio(e) < opt.accept_placed)
@@ -65,7 +65,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     DeformOptions around = opt.deform;
     around.region = std::move(local_region);
     r.deform = deform_mesh(raised, target, held, around);
-    local = r.deform.complete && r.deform.worst_ratio >= opt.optimiser.threshold;
+    local = r.deform.complete && r.deform.worst_ratio >= opt.accept_placed;
   }
   if (!local) r.deform = deform_mesh(raised, target, held, opt.deform);
   const bool restricted = opt.fixed_vertices || opt.deform.reach > 0 || opt.deform.layers > 0;
