@@ -23,6 +23,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   Eigen::Matrix2Xd target = place(raised);
   const std::vector<bool> boundary = boundary_nodes(raised);
   CurveResult r;
+  std::vector<int> local_region;  // step 1's poor elements and their rings
 
   // 1. Placed: the boundary nodes at their targets, the interior straight.
   if (opt.accept_placed <= 1) {
@@ -38,6 +39,14 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
       r.seconds = since(start);
       return r;
     }
+    // Poor or invalid somewhere: step 2 first solves only round those elements.
+    if (opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order) {
+      std::vector<bool> poor_nodes(placed.num_nodes(), false);
+      for (int e = 0; e < placed.num_triangles(); ++e)
+        if (v.ratio(e) < opt.accept_placed)
+          for (int k = 0; k < placed.tri.rows(); ++k) poor_nodes[placed.tri(k, e)] = true;
+      local_region = moving_region(placed, poor_nodes, opt.placed_rings);
+    }
   }
 
   // 2. Elastic.
@@ -51,14 +60,29 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
         target.col(i) = raised.x.col(i);
       }
   }
-  r.deform = deform_mesh(raised, target, held, opt.deform);
+  bool local = false;
+  if (!local_region.empty()) {
+    DeformOptions around = opt.deform;
+    around.region = std::move(local_region);
+    r.deform = deform_mesh(raised, target, held, around);
+    local = r.deform.complete && r.deform.worst_ratio >= opt.accept_placed;
+  }
+  if (!local) r.deform = deform_mesh(raised, target, held, opt.deform);
   const bool restricted = opt.fixed_vertices || opt.deform.reach > 0 || opt.deform.layers > 0;
   if (!r.deform.complete && restricted) {
     r.fell_back = true;
     r.restricted_reached = r.deform.reached;
+    // First the vertices freed within the same region (flap_gap02_bl_1e-4 p = 4: the held
+    // solve reaches 62 % of the motion; the whole mesh with 7771 triangles took 9 s).
+    if (opt.fixed_vertices && (opt.deform.reach > 0 || opt.deform.layers > 0))
+      r.deform = deform_mesh(raised, target, boundary, opt.deform);
+  }
+  if (!r.deform.complete && restricted) {
+    r.fell_back_whole = true;
     DeformOptions whole = opt.deform;
     whole.reach = 0;
     whole.layers = 0;
+    whole.region.clear();
     r.deform = deform_mesh(raised, target, boundary, whole);
   }
   r.elastic_seconds = since(elastic);

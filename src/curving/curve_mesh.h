@@ -39,24 +39,36 @@ struct CurveOptions {
   /// Step 1's bar: the placed mesh is kept if its worst certified minJ/maxJ is at
   /// least this (> 1: never, always solve).
   double accept_placed = 0.9;
+  /// Placed below accept_placed (or invalid): the elastic solve is first posed only on
+  /// the elements below it grown by this many rings (through shared nodes), kept if it
+  /// reaches the whole motion with the worst at least accept_placed, else solved as usual
+  /// (0: never). The bar is accept_placed, not the optimiser's threshold: on NACA-7526
+  /// with 15 layers at p = 3 (tests/app/optimise_cli_test.cpp) the local solve (318
+  /// triangles) gives 0.856, the solve within `reach` 0.992. Measured on issue 16's
+  /// corpus at p = 5, 1 / 2 rings / the solve within `reach`: circles6_nolayer 783 / 1156
+  /// / 1637 triangles solved, 0.25 / 0.72 / 1.1 s, worst 0.981 / 0.979 / 0.979;
+  /// star4_nolayer_coarse 0.04 / 0.09 / 0.37 s, worst 0.920 / 0.913 / 0.913.
+  int placed_rings = 1;
+  /// ... from this order on: at p = 2 the usual solve is cheap (0.03 s on
+  /// star4_nolayer_coarse), and the thesis' rotation experiments (tests/app/rotate_cli_test.cpp,
+  /// p = 2) start from its result (theta_max 166 deg, 157 from the local solve's).
+  int placed_rings_from_order = 3;
   /// Step 3 on or off.
   bool optimise = true;
-  /// Step 3's optimiser: OptimiseOptions' defaults (threshold 0.8, wall nodes sliding)
-  /// but free interior vertices and 60 sweeps. Measured on issue 16's corpus
-  /// (scripts/bench/README.md), worst minJ/maxJ after curving, ellipse10_bl_1e-4 p = 2 /
-  /// naca0012_bl_1e-3_coarse p = 4: solve alone 0.06 / 0.13; optimised with the wall
-  /// held, 20 sweeps: 0.64 / - (vertices held), 0.66 / 0.54 (free); wall sliding 0.71 /
-  /// 0.69; 60 sweeps 0.78 / 0.81 (200: 0.85 / 0.84 at 3x the time). The node-by-node sweeps
-  /// converge slowly in thin layers: each sweep moves a node within its own star only.
+  /// Step 3's optimiser: OptimiseOptions' defaults (threshold 0.8, wall nodes sliding,
+  /// whole-patch Newton steps, no node-by-node sweeps) but free interior vertices.
+  /// Measured on issue 16's corpus (scripts/bench/README.md), worst minJ/maxJ after
+  /// curving, ellipse10_bl_1e-4 p = 2 / naca0012_bl_1e-3_coarse p = 4: solve alone 0.06 /
+  /// 0.13; node-by-node sweeps with the wall held, 20 sweeps: 0.64 / - (vertices held),
+  /// 0.66 / 0.54 (free); wall sliding 0.71 / 0.69; 60 sweeps 0.78 / 0.81 (200: 0.85 /
+  /// 0.84 at 3x the time); whole-patch Newton steps 0.89 / 0.93 in a tenth of that time.
   /// Most passes of the optimiser from one solve: another pass (from where the last
   /// stopped) while elements stay below the threshold and the last pass lifted the worst
-  /// by 0.02 or more. naca0012_bl_1e-3_coarse p = 3: 0.72 after one pass of 60 sweeps,
-  /// 0.84 after 200 sweeps.
+  /// by 0.02 or more.
   int optimise_passes = 3;
   OptimiseOptions optimiser = [] {
     OptimiseOptions o;
     o.free_vertices = true;
-    o.max_sweeps = 60;
     return o;
   }();
 };
@@ -67,7 +79,8 @@ struct CurveResult {
   bool placed = false;            ///< step 1 sufficed: no solve, no optimisation
   double placed_worst = 0;        ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
   DeformResult deform;            ///< of the last solve (if any)
-  bool fell_back = false;         ///< the restricted solve fell short: the whole mesh was solved
+  bool fell_back = false;         ///< the restricted solve fell short: solved with vertices free
+  bool fell_back_whole = false;   ///< and that on the whole mesh (the region's fell short too)
   double restricted_reached = 0;  ///< the restricted solve's reached fraction, if it fell back
   bool freed_vertices = false;    ///< the result comes from step 3's solve with vertices free
   bool optimised = false;         ///< step 3 ran

@@ -93,8 +93,9 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
                            const std::vector<bool>& prescribed, const DeformOptions& opt) {
   std::vector<bool> moving(m.num_nodes());
   for (int i = 0; i < m.num_nodes(); ++i) moving[i] = prescribed[i] && target.col(i) != m.x.col(i);
-  const std::vector<int> region =
-      opt.layers > 0 ? moving_region(m, moving, opt.layers) : reach_region(m, moving, opt.reach);
+  const std::vector<int> region = !opt.region.empty() ? opt.region
+                                  : opt.layers > 0    ? moving_region(m, moving, opt.layers)
+                                                      : reach_region(m, moving, opt.reach);
   if (region.empty()) return {m, 1.0, true, 0, 0, mesh_validity(m).worst, 0, 0};
   std::vector<bool> inside(m.num_triangles(), false), outside_node(m.num_nodes(), false);
   for (int e : region) inside[e] = true;
@@ -129,6 +130,7 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
   DeformOptions whole = opt;
   whole.layers = 0;
   whole.reach = 0;
+  whole.region.clear();
   const DeformResult s = deform_mesh(sub, sub_target, sub_prescribed, whole);
   DeformResult r = s;
   r.mesh = m;
@@ -149,7 +151,8 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
   if (opt.increments < 1) throw Error("deform_mesh: increments must be >= 1");
   if (opt.layers < 0) throw Error("deform_mesh: layers must be >= 0");
   if (!(opt.reach >= 0)) throw Error("deform_mesh: reach must be >= 0");
-  if (opt.layers > 0 || opt.reach > 0) return deform_region(m, target, prescribed, opt);
+  if (!opt.region.empty() || opt.layers > 0 || opt.reach > 0)
+    return deform_region(m, target, prescribed, opt);
   const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
   const Eigen::Matrix2Xd start = m.x;
 

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "curving/deform_mesh.h"
 #include "curving/optimisation_patches.h"
+#include "curving/patch_newton.h"
 #include "fem/element_tabulation.h"
 #include "quality/ideal_jacobian.h"
 #include "quality/mesh_validity.h"
@@ -22,21 +23,12 @@ constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
 constexpr int kMaxHalvings = 20;
 constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
 
-// Nodes sliding along curves: slide_tag[i] the curve of node i (-1: not sliding),
-// u[i] its parameter, kept unwrapped on closed curves while optimising.
-struct Sliding {
-  const CurveEvaluator* curves = nullptr;
-  std::vector<int> tag;
-  std::vector<double> u;
-  std::vector<CurveRange> range;  // of tag[i]'s curve
-};
-
 // One patch being optimised on the shared coordinates x (its free nodes are its own).
 class PatchOptimiser {
  public:
   // floor: the patch's worst certified minJ/maxJ at the start, which no step may
   // take an element below.
-  PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, Sliding& sliding,
+  PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, SlidingNodes& sliding,
                  const OptimisationPatch& patch, const ElementTabulation& tab,
                  const OptimiseOptions& opt, double floor)
       : m_(m), x_(x), sliding_(sliding), patch_(patch), tab_(tab), opt_(opt), floor_(floor) {
@@ -68,6 +60,8 @@ class PatchOptimiser {
         if (it != free.end() && *it == node) star_[it - free.begin()].push_back({le, k});
       }
   }
+
+  const std::vector<Eigen::Matrix2d>& targets() const { return target_; }
 
   double total_energy() {
     double E = 0;
@@ -259,7 +253,7 @@ class PatchOptimiser {
 
   const Mesh& m_;
   Eigen::Matrix2Xd& x_;
-  Sliding& sliding_;
+  SlidingNodes& sliding_;
   const OptimisationPatch& patch_;
   const ElementTabulation& tab_;
   const OptimiseOptions& opt_;
@@ -285,6 +279,7 @@ double certified_ratio(const Mesh& m, const Eigen::Matrix2Xd& x, int e, const Bo
 struct PatchOutcome {
   bool accepted = false;
   int sweeps = 0;
+  int newton = 0;
   double energy_before = 0, energy_after = 0;
 };
 
@@ -318,7 +313,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   // Sliding: nodes on a curve the evaluator slides, not fixed by the caller, and not
   // vertices unless opt.slide says so.
   const std::vector<bool> vertex = vertex_nodes(m);
-  Sliding sliding;
+  SlidingNodes sliding;
   sliding.curves = curves;
   sliding.tag.assign(m.num_nodes(), -1);
   sliding.u.assign(m.num_nodes(), 0.0);
@@ -345,8 +340,8 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
       for (int k = 0; k < m.tri.rows(); ++k) held[m.tri(k, e)] = true;
   const std::vector<OptimisationPatch> patches = optimisation_patches(m, poor, opt.layers, held);
   res.patches = static_cast<int>(patches.size());
-  const ElementTabulation tab =
-      tabulate_element(m.order, opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order);
+  const ElementTabulation tab = tabulate_element_and_lattice(
+      m.order, opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order, opt.lattice_weight);
 
   Eigen::Matrix2Xd& x = res.mesh.x;
   std::vector<PatchOutcome> outcome(patches.size());
@@ -369,7 +364,21 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     }
     PatchOptimiser po(m, x, sliding, patch, tab, opt, worst);
     PatchOutcome& o = outcome[k];
-    double E = o.energy_before = po.total_energy();
+    o.energy_before = po.total_energy();
+    if (opt.newton_iterations > 0) {
+      PatchProblem problem;
+      problem.mesh = &m;
+      problem.elements = &patch.elements;
+      problem.free_nodes = &patch.free_nodes;
+      problem.targets = &po.targets();
+      problem.tab = &tab;
+      problem.energy = opt.energy;
+      problem.bounds = opt.bounds;
+      problem.floor = worst;
+      o.newton =
+          patch_newton(problem, x, sliding, opt.newton_iterations, opt.newton_tolerance).iterations;
+    }
+    double E = po.total_energy();
     while (o.sweeps < opt.max_sweeps) {
       const double next = po.sweep();
       ++o.sweeps;
@@ -399,6 +408,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   for (std::size_t k = 0; k < patches.size(); ++k) {
     const PatchOutcome& o = outcome[k];
     res.sweeps += o.sweeps;
+    res.newton_steps += o.newton;
     if (!o.accepted) continue;
     ++res.accepted;
     res.moved_nodes += static_cast<int>(patches[k].free_nodes.size());

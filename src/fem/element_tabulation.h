@@ -26,4 +26,11 @@ int stiffness_quadrature_degree(int order, int margin);
 /// The tabulation of order 1 <= order <= kMaxOrder at triangle_quadrature(degree).
 ElementTabulation tabulate_element(int order, int quadrature_degree);
 
+/// The tabulation at triangle_quadrature(degree) and, with lattice_weight > 0, also at
+/// the nodes of the order 2 (order - 1) lattice (where det J's Bezier coefficients live,
+/// corners and edges included), the rule's weights scaled by 1 - lattice_weight and the
+/// lattice sharing lattice_weight of the area equally (an objective's sample points,
+/// not an exact rule: the high-order optimiser's energy, curving/optimise_mesh.h).
+ElementTabulation tabulate_element_and_lattice(int order, int degree, double lattice_weight);
+
 }  // namespace homesh

@@ -20,6 +20,12 @@ void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
       "sweeps", [o](T& t) -> int& { return o(t).max_sweeps; }, integer(0, 10000),
       "most node-by-node Newton sweeps per patch");
   table.add(
+      "newton", [o](T& t) -> int& { return o(t).newton_iterations; }, integer(0, 10000),
+      "most whole-patch Newton steps per patch, before the sweeps (0: sweeps only)");
+  table.add(
+      "lattice", [o](T& t) -> double& { return o(t).lattice_weight; }, real(0, 1, "[)"),
+      "share of the energy's weight on the order 2(p-1) lattice (corners and edges)");
+  table.add(
       "slide", [o](T& t) -> OptimiseOptions::Slide& { return o(t).slide; },
       choice<OptimiseOptions::Slide>({{"all", OptimiseOptions::Slide::all},
                                       {"nodes", OptimiseOptions::Slide::edge_nodes},

@@ -15,9 +15,9 @@ const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
 
 // The main job's mesh (scripts/naca7526.sh) at p = 3: curve leaves no element below the
 // default threshold 0.8 (worst 0.9918), so the stage is asked for 0.999: one patch of
-// 435 poor elements, worst 0.9918 -> 0.9936 with the wall nodes held (measured, 2 s on 2 busy
-// cores; sliding along the aerofoil, the default, lowers the patch's summed distortion further
-// but leaves the worst at 0.9920: near 1 the energy and the worst element part ways).
+// 435 poor elements, worst 0.9918 -> 0.9928 with the wall nodes held (measured, 2 Newton
+// steps, 0.16 s; 20 node-by-node sweeps gave 0.9936 in 2 s: near 1 the energy and the worst
+// element part ways, and the Newton steps stop once the energy's predicted decrease is 1 %).
 TEST_CASE("optimise: NACA-7526 with boundary layers at p = 3, worst element better", "[app]") {
   const std::string out = "/tmp/homesh_optimise_naca.msh";
   const auto r = run_homesh(
@@ -33,14 +33,14 @@ TEST_CASE("optimise: NACA-7526 with boundary layers at p = 3, worst element bett
       r.output, m,
       std::regex(
           R"(optimise: (\d+) patches around (\d+) elements below minJ/maxJ \S+, (\d+) kept, )"
-          R"(\d+ sweeps: worst minJ/maxJ (\d\.\d+) -> (\d\.\d+), (\d+) below, (\d+) nodes sliding )"
+          R"(\d+ Newton steps, \d+ sweeps: worst minJ/maxJ (\d\.\d+) -> (\d\.\d+), (\d+) below, (\d+) nodes sliding )"
           R"(on curves, (\S+) s)")));
   const int patches = std::stoi(m[1]), kept = std::stoi(m[3]);
   const double before = std::stod(m[4]), after = std::stod(m[5]);
   CHECK(patches > 0);
   CHECK(kept > 0);
   CHECK(before > 0.99);
-  CHECK(after > before + 0.001);
+  CHECK(after > before + 0.0005);
   std::smatch q;
   REQUIRE(std::regex_search(
       r.output, q,

@@ -62,8 +62,9 @@ void run(Context& ctx, const CurveOptions& o) {
                                                   : std::string("whole mesh"));
     ctx.log.info(
         "curve: the solve ({}) kept the mesh valid only up to {:.1f} % of the motion; "
-        "solving on the whole mesh with every interior node free",
-        restricted, 100 * c.restricted_reached);
+        "solved again with every interior node free {}",
+        restricted, 100 * c.restricted_reached,
+        c.fell_back_whole ? "on the whole mesh" : "in the same region");
   }
   if (c.freed_vertices)
     ctx.log.info(

@@ -30,10 +30,12 @@ void run(Context& ctx, const OptimiseOptions& o) {
   m = std::move(r.mesh);
   ctx.fields.clear();
   ctx.log.info(
-      "optimise: {} patches around {} elements below minJ/maxJ {:g}, {} kept, {} sweeps: worst "
+      "optimise: {} patches around {} elements below minJ/maxJ {:g}, {} kept, {} Newton steps, {} "
+      "sweeps: "
+      "worst "
       "minJ/maxJ {:.4f} -> {:.4f}, {} below, {} nodes sliding on curves, {:.2f} s",
-      r.patches, r.poor_before, o.threshold, r.accepted, r.sweeps, r.worst_before, r.worst_after,
-      r.poor_after, r.sliding_nodes, seconds);
+      r.patches, r.poor_before, o.threshold, r.accepted, r.newton_steps, r.sweeps, r.worst_before,
+      r.worst_after, r.poor_after, r.sliding_nodes, seconds);
   if (r.invalid > 0)
     ctx.log.warn("optimise: {} elements not certified valid were left as they are (no untangling)",
                  r.invalid);

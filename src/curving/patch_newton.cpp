@@ -1,0 +1,249 @@
+#include "curving/patch_newton.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace homesh {
+namespace {
+
+constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
+constexpr int kMaxHalvings = 12;  // of one step's length
+constexpr int kMaxDampings = 8;   // raises of lambda (x 10) before giving up
+constexpr double kFirstDamping = 1e-4;
+constexpr double kLeastDamping = 1e-8;  // below this after accepted steps: pure Newton
+
+class PatchNewton {
+ public:
+  PatchNewton(const PatchProblem& p, Eigen::Matrix2Xd& x, SlidingNodes& s)
+      : p_(p), m_(*p.mesh), elements_(*p.elements), free_(*p.free_nodes), x_(x), s_(s) {
+    const int nf = static_cast<int>(free_.size());
+    first_.assign(nf + 1, 0);
+    for (int i = 0; i < nf; ++i) first_[i + 1] = first_[i] + (sliding(i) ? 1 : 2);
+    slots_.resize(elements_.size());
+    for (std::size_t le = 0; le < elements_.size(); ++le)
+      for (int k = 0; k < m_.tri.rows(); ++k) {
+        const int node = m_.tri(k, elements_[le]);
+        const auto it = std::lower_bound(free_.begin(), free_.end(), node);
+        if (it != free_.end() && *it == node)
+          slots_[le].push_back({k, static_cast<int>(it - free_.begin())});
+      }
+    X_.resize(2, m_.tri.rows());
+  }
+
+  int dofs() const { return first_.back(); }
+
+  // Summed energy of the elements with a free node (+infinity if any is inverted).
+  double energy() {
+    double E = 0;
+    for (std::size_t le = 0; le < elements_.size(); ++le) {
+      if (slots_[le].empty()) continue;
+      E += distortion_energy(gather(le), *p_.tab, (*p_.targets)[le], p_.energy);
+      if (!std::isfinite(E)) return E;
+    }
+    return E;
+  }
+
+  // Gradient g and Hessian H (by the dofs) of energy() at the current nodes.
+  void assemble(Eigen::VectorXd& g, Eigen::SparseMatrix<double>& H) {
+    const int nf = static_cast<int>(free_.size());
+    std::vector<Eigen::Vector2d> tangent(nf);
+    for (int i = 0; i < nf; ++i)
+      if (sliding(i)) s_.point(free_[i], s_.u[free_[i]], &tangent[i]);
+    g.setZero(dofs());
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::Matrix2Xd G, Gh;
+    for (std::size_t le = 0; le < elements_.size(); ++le) {
+      const std::vector<Slot>& slots = slots_[le];
+      const int L = static_cast<int>(slots.size());
+      if (L == 0) continue;
+      Eigen::Matrix2Xd X = gather(le);
+      const Eigen::Matrix2d& T = (*p_.targets)[le];
+      distortion_energy(X, *p_.tab, T, p_.energy, &G);
+      // Local coordinates (2 per slot) to dofs: the identity, or a sliding node's tangent.
+      std::vector<int> dof;
+      for (const Slot& a : slots)
+        for (int c = 0; c < (sliding(a.free) ? 1 : 2); ++c) dof.push_back(first_[a.free] + c);
+      Eigen::MatrixXd P = Eigen::MatrixXd::Zero(2 * L, static_cast<int>(dof.size()));
+      Eigen::VectorXd gl(2 * L);
+      for (int a = 0, c = 0; a < L; ++a) {
+        gl.segment<2>(2 * a) = G.col(slots[a].k);
+        if (sliding(slots[a].free)) {
+          P.block<2, 1>(2 * a, c++) = tangent[slots[a].free];
+        } else {
+          P(2 * a, c++) = 1;
+          P(2 * a + 1, c++) = 1;
+        }
+      }
+      // Forward differences of the gradient, step a millionth of the element's height.
+      const double h = 1e-6 * height(le);
+      Eigen::MatrixXd Hl(2 * L, 2 * L);
+      for (int a = 0; a < L; ++a)
+        for (int c = 0; c < 2; ++c) {
+          const double old = X(c, slots[a].k);
+          X(c, slots[a].k) = old + h;
+          const double Eh = distortion_energy(X, *p_.tab, T, p_.energy, &Gh);
+          X(c, slots[a].k) = old;
+          for (int b = 0; b < L; ++b)
+            Hl.block<2, 1>(2 * b, 2 * a + c) =
+                std::isfinite(Eh) ? Eigen::Vector2d((Gh.col(slots[b].k) - G.col(slots[b].k)) / h)
+                                  : Eigen::Vector2d::Zero();
+        }
+      const Eigen::MatrixXd Hd = P.transpose() * (0.5 * (Hl + Hl.transpose())) * P;
+      const Eigen::VectorXd gd = P.transpose() * gl;
+      for (int r = 0; r < Hd.rows(); ++r) {
+        g(dof[r]) += gd(r);
+        for (int c = 0; c < Hd.cols(); ++c) entries.emplace_back(dof[r], dof[c], Hd(r, c));
+      }
+    }
+    H.resize(dofs(), dofs());
+    H.setFromTriplets(entries.begin(), entries.end());
+  }
+
+  // Every element with a free node certified valid with minJ/maxJ >= floor.
+  bool certified() {
+    for (std::size_t le = 0; le < elements_.size(); ++le) {
+      if (slots_[le].empty()) continue;
+      const JacobianBounds b = jacobian_bounds(gather(le), m_.order, p_.bounds);
+      if (!b.valid_certified || scaled_jacobian_ratio(b) < p_.floor) return false;
+    }
+    return true;
+  }
+
+  // Saves the free nodes (positions, parameters) as the base of move().
+  void save() {
+    x0_.resize(2, free_.size());
+    u0_.resize(free_.size());
+    for (std::size_t i = 0; i < free_.size(); ++i) {
+      x0_.col(i) = x_.col(free_[i]);
+      u0_[i] = s_.u[free_[i]];
+    }
+  }
+
+  // The free nodes at the saved base plus t * step (sliding nodes by parameter).
+  void move(const Eigen::VectorXd& step, double t) {
+    for (std::size_t i = 0; i < free_.size(); ++i) {
+      const int node = free_[i];
+      if (t == 0) {
+        x_.col(node) = x0_.col(i);
+        s_.u[node] = u0_[i];
+      } else if (sliding(i)) {
+        const CurveRange& r = s_.range[node];
+        double u = u0_[i] + t * step(first_[i]);
+        if (!r.closed) u = std::clamp(u, r.a, r.b);
+        s_.u[node] = u;
+        x_.col(node) = s_.point(node, u);
+      } else {
+        x_.col(node) = x0_.col(i) + t * step.segment<2>(first_[i]);
+      }
+    }
+  }
+
+ private:
+  struct Slot {
+    int k;     // node slot in the element
+    int free;  // index into free_
+  };
+
+  bool sliding(int i) const { return s_.tag[free_[i]] >= 0; }
+
+  const Eigen::Matrix2Xd& gather(std::size_t le) {
+    for (int k = 0; k < m_.tri.rows(); ++k) X_.col(k) = x_.col(m_.tri(k, elements_[le]));
+    return X_;
+  }
+
+  // Smallest height of the straight triangle through element le's corners.
+  double height(std::size_t le) const {
+    const int e = elements_[le];
+    const Eigen::Vector2d a = x_.col(m_.tri(0, e)), b = x_.col(m_.tri(1, e)),
+                          c = x_.col(m_.tri(2, e));
+    const double edge = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const double area2 = std::abs((b - a)(0) * (c - a)(1) - (b - a)(1) * (c - a)(0));
+    return area2 / edge;
+  }
+
+  const PatchProblem& p_;
+  const Mesh& m_;
+  const std::vector<int>& elements_;
+  const std::vector<int>& free_;
+  Eigen::Matrix2Xd& x_;
+  SlidingNodes& s_;
+  std::vector<int> first_;  // dofs of free node i: first_[i] .. first_[i + 1] - 1
+  std::vector<std::vector<Slot>> slots_;
+  Eigen::Matrix2Xd X_, x0_;
+  std::vector<double> u0_;
+};
+
+}  // namespace
+
+PatchNewtonResult patch_newton(const PatchProblem& problem, Eigen::Matrix2Xd& x,
+                               SlidingNodes& sliding, int max_iterations, double tolerance) {
+  PatchNewton pn(problem, x, sliding);
+  PatchNewtonResult res;
+  double E = res.energy_before = res.energy_after = pn.energy();
+  if (!std::isfinite(E) || pn.dofs() == 0) return res;
+  double lambda = 0;
+  Eigen::VectorXd g, step;
+  Eigen::SparseMatrix<double> H;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  bool analysed = false;
+  while (res.iterations < max_iterations) {
+    pn.assemble(g, H);
+    Eigen::VectorXd d = H.diagonal().cwiseAbs();
+    const double dmax = d.maxCoeff();
+    if (!(dmax > 0)) break;
+    d = d.cwiseMax(1e-12 * dmax);
+    if (!analysed) {
+      ldlt.analyzePattern(H);
+      analysed = true;
+    }
+    pn.save();
+    bool accepted = false, raised = false;
+    double E_new = E, decrement = 0;
+    for (int damping = 0; damping <= kMaxDampings && !accepted; ++damping) {
+      Eigen::SparseMatrix<double> A = H;
+      for (int i = 0; i < A.rows(); ++i) A.coeffRef(i, i) += lambda * d(i);
+      ldlt.factorize(A);
+      const bool definite = ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0;
+      if (definite) {
+        step = ldlt.solve(-g);
+        const double slope = g.dot(step);
+        decrement = -slope;
+        if (slope < 0 && step.allFinite()) {
+          double t = 1;
+          for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
+            pn.move(step, t);
+            E_new = pn.energy();
+            if (std::isfinite(E_new) && E_new < E + kArmijo * t * slope && pn.certified()) {
+              accepted = true;
+              break;
+            }
+          }
+          if (!accepted) pn.move(step, 0);
+        }
+      }
+      if (!accepted) {
+        lambda = std::max(10 * lambda, kFirstDamping);
+        raised = true;
+      }
+    }
+    if (!accepted) break;
+    ++res.iterations;
+    // Lowered only after a step the first damping tried gave: where the Hessian is
+    // indefinite, the lambda that made it definite is kept (no factorisation wasted).
+    if (!raised) lambda = lambda / 10 < kLeastDamping ? 0 : lambda / 10;
+    // Converged when the step's predicted decrease (the Newton decrement -g.d) is below
+    // tolerance: a small actual decrease alone also happens on the way (a step cut short
+    // by the barrier before the energy falls by orders of magnitude).
+    const bool converged = !(decrement > tolerance * E);
+    E = E_new;
+    if (converged) break;
+  }
+  res.energy_after = E;
+  return res;
+}
+
+}  // namespace homesh

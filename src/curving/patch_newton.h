@@ -1,0 +1,76 @@
+#pragma once
+// Whole-patch Newton steps of the high-order optimiser (curving/optimise_mesh.h):
+// every free node of a patch moves at once, along the solution of
+//
+//   (H + lambda diag(H)) d = -g,
+//
+// g and H the gradient and Hessian of the patch's summed distortion energy
+// (curving/distortion_energy.h) by the free nodes' coordinates (a sliding
+// node's by its curve parameter u: x = C(u), g_u = g . C'(u), H_uu = C'^T H C',
+// the curvature term dropped), H assembled from element Hessians by forward
+// differences of the analytic element gradient, lambda a Levenberg-Marquardt
+// damping raised until the sparse LDL^T factorisation is positive definite and
+// the step is accepted, lowered after each accepted step (Toulorge, Geuzaine,
+// Remacle & Lambrechts, JCP 254, 2013, Sec 3.4: Newton on the whole patch;
+// Gmsh's HighOrderOptimize). A step is backtracked (Armijo) until the energy
+// drops and every element with a moved node is certified valid (Bezier bounds)
+// with minJ/maxJ at least `floor`.
+//
+// Why not only node-by-node sweeps: in a boundary layer of aspect ratio 100+,
+// the bulge of a curved wall edge must be spread through many element layers
+// at once; a node moving within its own star sees the layer above and below
+// held, and the sweeps need hundreds of passes (ellipse10_bl_1e-4 p = 3:
+// worst minJ/maxJ 0.70 after 3 x 60 sweeps, 0.82 after 600, 16 s).
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/mesh.h"
+#include "curving/curve_evaluator.h"
+#include "curving/distortion_energy.h"
+#include "fem/element_tabulation.h"
+#include "quality/jacobian_bounds.h"
+
+namespace homesh {
+
+/// Nodes sliding along curves: tag[i] the curve of node i (-1: not sliding),
+/// u[i] its parameter (kept unwrapped on closed curves while optimising),
+/// range[i] that of tag[i]'s curve.
+struct SlidingNodes {
+  const CurveEvaluator* curves = nullptr;
+  std::vector<int> tag;
+  std::vector<double> u;
+  std::vector<CurveRange> range;
+  /// C(u) of node i's curve (u wrapped into the range on a closed curve).
+  Eigen::Vector2d point(int i, double u, Eigen::Vector2d* tangent = nullptr) const {
+    return curves->point(tag[i], wrap_parameter(range[i], u), tangent);
+  }
+};
+
+/// One patch: its elements, its free nodes (ascending), each element's target
+/// inverse T (distortion_energy.h), and what the steps keep.
+struct PatchProblem {
+  const Mesh* mesh = nullptr;
+  const std::vector<int>* elements = nullptr;
+  const std::vector<int>* free_nodes = nullptr;
+  const std::vector<Eigen::Matrix2d>* targets = nullptr;
+  const ElementTabulation* tab = nullptr;
+  DistortionEnergyOptions energy;
+  BoundsOptions bounds;
+  /// No accepted step takes an element below this certified minJ/maxJ.
+  double floor = 0;
+};
+
+struct PatchNewtonResult {
+  int iterations = 0;  ///< accepted steps
+  double energy_before = 0, energy_after = 0;
+};
+
+/// At most max_iterations accepted steps on the nodes x (all of the mesh's; only
+/// the patch's free nodes change, sliding nodes' u in `sliding` with them);
+/// stops when a step lowers the energy by less than `tolerance` (relative) or
+/// no damping gives an acceptable step. Safe to run on patches sharing no free
+/// node in parallel.
+PatchNewtonResult patch_newton(const PatchProblem& problem, Eigen::Matrix2Xd& x,
+                               SlidingNodes& sliding, int max_iterations, double tolerance);
+
+}  // namespace homesh
