@@ -33,6 +33,7 @@ sys.path.insert(0, HERE)
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
 import corpus  # noqa: E402
+from gmsh_referee import icn  # noqa: E402
 
 METHODS = ["gmsh frontal", "gmsh delaunay", "voronoi", "voronoi windows=off"]
 FIELDS = ["case", "method", "status", "triangles", "icn_min", "icn_mean", "invalid",
@@ -48,24 +49,6 @@ def models():
             seen.add(key)
             out.append(c)
     return out
-
-
-def icn():
-    """(min, mean, triangles, invalid) of Gmsh's ICN and minJ/maxJ on the current model."""
-    import gmsh
-    import numpy as np
-    for name, value in [("JacobianDeterminant", 1), ("IGEMeasure", 0), ("ICNMeasure", 1),
-                        ("CreateView", 1), ("Recompute", 1), ("DimensionOfElements", 2)]:
-        gmsh.plugin.setNumber("AnalyseMeshQuality", name, value)
-    before = set(gmsh.view.getTags())
-    gmsh.plugin.run("AnalyseMeshQuality")
-    values = {}
-    for tag in set(gmsh.view.getTags()) - before:
-        name = gmsh.option.getString(f"View[{gmsh.view.getIndex(tag)}].Name")
-        _, _, data, _, _ = gmsh.view.getModelData(tag, 0)
-        values[name.split()[0]] = np.array([d[0] for d in data])
-    q, jac = values["ICN"], values["minJ/maxJ"]
-    return float(q.min()), float(q.mean()), len(q), int((jac <= 0).sum())
 
 
 def child(conn, name, method):

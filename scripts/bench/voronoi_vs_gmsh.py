@@ -25,11 +25,15 @@ import argparse
 import csv
 import os
 import subprocess
+import sys
 import tempfile
 import time
 
 import gmsh
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gmsh_referee  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -51,19 +55,7 @@ def icn(path):
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.open(path)
-        for name, value in [("JacobianDeterminant", 1), ("IGEMeasure", 0), ("ICNMeasure", 1),
-                            ("CreateView", 1), ("Recompute", 1), ("DimensionOfElements", 2)]:
-            gmsh.plugin.setNumber("AnalyseMeshQuality", name, value)
-        before = set(gmsh.view.getTags())
-        gmsh.plugin.run("AnalyseMeshQuality")
-        values = {}
-        for tag in set(gmsh.view.getTags()) - before:
-            name = gmsh.option.getString(f"View[{gmsh.view.getIndex(tag)}].Name")
-            _, _, data, _, _ = gmsh.view.getModelData(tag, 0)
-            values[name.split()[0]] = np.array([d[0] for d in data])
-        q = values["ICN"]
-        jac = values["minJ/maxJ"]
-        return q.min(), q.mean(), len(q), int((jac <= 0).sum())
+        return gmsh_referee.icn()
     finally:
         gmsh.finalize()
 

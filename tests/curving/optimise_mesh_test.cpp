@@ -9,6 +9,7 @@
 
 #include "../layers/layer_test_meshes.h"
 #include "core/raise_order.h"
+#include "curved_ring.h"
 #include "curving/deform_mesh.h"
 #include "quality/mesh_validity.h"
 
@@ -83,27 +84,13 @@ TEST_CASE("optimise: a thin curved layer's bulge is spread into the elements abo
   const Mesh lin = test::ring_mesh(test::circle(n, 1.0), test::circle(n, 1.5), 10, 4);
   for (int p : {2, 3, 4}) {
     CAPTURE(p);
-    Mesh m = raise_order(lin, p);
-    // Curved by the plain elastic analogy with the linear vertices held (E = 1, nu = 0.4):
-    // valid, but the thin elements at the wall take most of the bulge.
-    Eigen::Matrix2Xd target = m.x;
-    for (int i = 0; i < m.num_nodes(); ++i)
-      if (m.node_class[i].dim == 1)
-        target.col(i) *= (m.node_class[i].tag == 1 ? 1.0 : 1.5) / m.x.col(i).norm();
-    std::vector<bool> held = boundary_nodes(m);
-    const std::vector<bool> vertex = vertex_nodes(m);
-    for (int i = 0; i < m.num_nodes(); ++i) held[i] = held[i] || vertex[i];
-    DeformOptions d;
-    d.formulation = "plain";
-    d.params.poisson = 0.4;
-    d.reach = 0;
-    d.increments = 1;
-    const DeformResult curved = deform_mesh(m, target, held, d);
-    REQUIRE(curved.complete);
+    // Curved by the plain elastic analogy with the linear vertices held: valid, but the
+    // thin elements at the wall take most of the bulge.
+    const Mesh curved = test::curved_ring(lin, p);
     // Every element below 0.95 is poor (the default 0.8 leaves this mesh alone).
     OptimiseOptions o;
     o.threshold = 0.95;
-    const OptimiseResult r = optimise_mesh(curved.mesh, boundary_nodes(curved.mesh), o);
+    const OptimiseResult r = optimise_mesh(curved, boundary_nodes(curved), o);
     const MeshValidity after = mesh_validity(r.mesh);
     INFO("worst " << r.worst_before << " -> " << r.worst_after << ", " << r.patches << " patches, "
                   << r.accepted << " kept, " << r.sweeps << " sweeps");
@@ -163,23 +150,7 @@ Mesh uneven_curved_annulus(int n, int p) {
     const double a = 2 * M_PI * (i + 0.4 * std::sin(4 * M_PI * i / n)) / n;
     inner.col(i) = Eigen::Vector2d(std::cos(a), std::sin(a));
   }
-  Mesh m = raise_order(test::ring_mesh(inner, test::circle(n, 1.5), 10, 4), p);
-  Eigen::Matrix2Xd target = m.x;
-  for (int i = 0; i < m.num_nodes(); ++i)
-    if (m.node_class[i].dim == 1) {
-      target.col(i) *= (m.node_class[i].tag == 1 ? 1.0 : 1.5) / m.x.col(i).norm();
-      m.node_class[i].u = std::numeric_limits<double>::quiet_NaN();  // the evaluator's
-    }
-  std::vector<bool> held = boundary_nodes(m);
-  const std::vector<bool> vertex = vertex_nodes(m);
-  for (int i = 0; i < m.num_nodes(); ++i) held[i] = held[i] || vertex[i];
-  DeformOptions d;
-  d.formulation = "plain";
-  d.params.poisson = 0.4;
-  d.reach = 0;
-  const DeformResult curved = deform_mesh(m, target, held, d);
-  REQUIRE(curved.complete);
-  return curved.mesh;
+  return test::curved_ring(test::ring_mesh(inner, test::circle(n, 1.5), 10, 4), p, true);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "../layers/layer_test_meshes.h"
 #include "core/raise_order.h"
+#include "curved_ring.h"
 #include "curving/deform_mesh.h"
 #include "curving/optimise_mesh.h"
 #include "quality/mesh_validity.h"
@@ -18,23 +19,7 @@ namespace {
 // wall edges bulge by 1 - cos(pi / 8) = 0.076, 760 first cells), curved by the plain
 // elastic analogy with the linear vertices held: valid, the first layers bent hard.
 Mesh thin_layer(int p) {
-  const Mesh lin = test::ring_mesh(test::circle(8, 1.0), test::circle(8, 1.5), 12, 4);
-  Mesh m = raise_order(lin, p);
-  Eigen::Matrix2Xd target = m.x;
-  for (int i = 0; i < m.num_nodes(); ++i)
-    if (m.node_class[i].dim == 1)
-      target.col(i) *= (m.node_class[i].tag == 1 ? 1.0 : 1.5) / m.x.col(i).norm();
-  std::vector<bool> held = boundary_nodes(m);
-  const std::vector<bool> vertex = vertex_nodes(m);
-  for (int i = 0; i < m.num_nodes(); ++i) held[i] = held[i] || vertex[i];
-  DeformOptions d;
-  d.formulation = "plain";
-  d.params.poisson = 0.4;
-  d.reach = 0;
-  d.increments = 1;
-  const DeformResult curved = deform_mesh(m, target, held, d);
-  REQUIRE(curved.complete);
-  return curved.mesh;
+  return test::curved_ring(test::ring_mesh(test::circle(8, 1.0), test::circle(8, 1.5), 12, 4), p);
 }
 
 }  // namespace
