@@ -53,8 +53,9 @@ struct DeformOptions {
   /// stacked there, so unlike `layers` the region does not shrink to a sliver
   /// in a boundary layer. Ignored when layers > 0.
   double reach = 2;
-  /// Non-empty: solve only on these triangles (ascending), the rest held still;
-  /// replaces layers and reach.
+  /// Non-empty: solve only on these triangles (ascending), the rest held still
+  /// but for the prescribed nodes in none of them, which go straight to their
+  /// targets; replaces layers and reach.
   std::vector<int> region;
 };
 

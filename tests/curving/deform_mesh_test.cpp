@@ -259,3 +259,30 @@ TEST_CASE("reach = r solves within r wall-triangle sizes of the moving wall, thr
   CHECK(both.solved_triangles == layers.solved_triangles);
   CHECK((both.mesh.x - layers.mesh.x).cwiseAbs().maxCoeff() == 0.0);
 }
+
+TEST_CASE("an explicit region: its prescribed nodes solved, those outside it put on target",
+          "[curving]") {
+  // The annulus's chords curved, the solve only on the first of the 12 chord triangles
+  // (layer 1): the other 11 chords' edge nodes still reach the circles.
+  const Annulus a = straight_annulus(6, 3);
+  std::vector<bool> moving(a.m.num_nodes());
+  for (int i = 0; i < a.m.num_nodes(); ++i)
+    moving[i] = a.prescribed[i] && a.target.col(i) != a.m.x.col(i);
+  const std::vector<int> one = moving_region(a.m, moving, 1);
+  REQUIRE(one.size() == 12);
+  DeformOptions opt = thesis_options();
+  opt.region = {one[0]};
+  const DeformResult r = deform_mesh(a.m, a.target, a.prescribed, opt);
+  REQUIRE(r.complete);
+  CHECK(r.solved_triangles == 1);
+  double off_target = 0;
+  int moved = 0;
+  for (int i = 0; i < a.m.num_nodes(); ++i)
+    if (a.prescribed[i]) {
+      off_target = std::max(off_target, (r.mesh.x.col(i) - a.target.col(i)).norm());
+      moved += moving[i];
+    }
+  CHECK(moved == 2 * 12);  // the two edge nodes of each of the 12 chords
+  CHECK(off_target < 1e-12);
+  CHECK(r.worst_ratio == Approx(mesh_validity(r.mesh).worst));
+}
