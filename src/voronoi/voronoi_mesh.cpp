@@ -150,10 +150,7 @@ Eigen::Matrix2Xd lloyd_in_windows(const VoronoiProblem& p, const std::vector<int
     const double ds = std::max({h_min / kCellsPerSize, min_ds, extent / (w.max_nodes - 1)});
     VoronoiProblem win;
     win.metric = p.metric;
-    win.grid.origin = lo;
-    win.grid.dx = win.grid.dy = ds;
-    win.grid.nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / ds)) + 1;
-    win.grid.ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / ds)) + 1;
+    win.grid = CartesianGrid::stepped(lo, hi, ds);
     win.domain = loop_signed_distance(win.grid, loops.polygons, kBandCells * ds);
     std::vector<int> local;
     std::vector<char> held;
@@ -310,9 +307,9 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
     p.grid = growth_grid;
     p.domain = loop_signed_distance(p.grid, loops.polygons, kBandCells * p.grid.ds());
     const double resolved = kCellsPerSize * p.grid.ds();
-    for (Eigen::Index s = 0; s < p.seeds.cols(); ++s)
-      if (metric_min_speed(metric.metric_at(p.seeds.col(s))) < resolved)
-        fine.push_back(static_cast<int>(s));
+    const std::vector<double> h_moved = seed_sizes(metric, p.seeds);  // after Lloyd's moves
+    for (std::size_t s = 0; s < h_moved.size(); ++s)
+      if (h_moved[s] < resolved) fine.push_back(static_cast<int>(s));
     refine.allowed = [&metric, resolved](const Eigen::Vector2d& x) {
       return metric_min_speed(metric.metric_at(x)) >= 1.5 * resolved;
     };

@@ -49,10 +49,7 @@ Merge grow_window(const VoronoiProblem& problem, const RegrownDual& at,
                   const std::string& engine, const Box& core, const Box& inner, const Box& outer,
                   double ds, double band) {
   VoronoiProblem w;
-  w.grid.origin = outer.lo;
-  w.grid.dx = w.grid.dy = ds;
-  w.grid.nx = static_cast<int>(std::ceil((outer.hi.x() - outer.lo.x()) / ds)) + 1;
-  w.grid.ny = static_cast<int>(std::ceil((outer.hi.y() - outer.lo.y()) / ds)) + 1;
+  w.grid = CartesianGrid::stepped(outer.lo, outer.hi, ds);
   w.metric = problem.metric;
   w.contact = problem.contact;
   w.domain = domain_on(w.grid);

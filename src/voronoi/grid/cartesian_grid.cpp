@@ -20,6 +20,16 @@ CartesianGrid CartesianGrid::spanning(const Eigen::Vector2d& lo, const Eigen::Ve
   return g;
 }
 
+CartesianGrid CartesianGrid::stepped(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                                     double ds) {
+  CartesianGrid g;
+  g.origin = lo;
+  g.dx = g.dy = ds;
+  g.nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / ds)) + 1;
+  g.ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / ds)) + 1;
+  return g;
+}
+
 CartesianGrid CartesianGrid::covering(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int n,
                                       int margin) {
   const double ds = (hi - lo).maxCoeff() / (n - 1 - 2 * margin);

@@ -18,6 +18,10 @@ struct CartesianGrid {
   static CartesianGrid spanning(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int nx,
                                 int ny);
 
+  /// The square-celled grid of spacing ds from lo over the box [lo, hi] (its
+  /// last nodes at or beyond hi): the windows' grids (dual/window_regrowth.h).
+  static CartesianGrid stepped(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double ds);
+
   /// The square-celled grid over the box [lo, hi] plus `margin` cells on each
   /// side, with `n` nodes along the box's longer side.
   static CartesianGrid covering(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int n,
