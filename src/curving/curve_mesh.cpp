@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/raise_order.h"
+#include "curving/interior_blending.h"
 #include "quality/mesh_validity.h"
 
 namespace homesh {
@@ -30,6 +31,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     Mesh placed = raised;
     for (int i = 0; i < placed.num_nodes(); ++i)
       if (boundary[i]) placed.x.col(i) = target.col(i);
+    if (opt.blend) blend_interiors(placed, boundary);
     const MeshValidity v = mesh_validity(placed, opt.optimiser.bounds);
     r.placed_worst = v.invalid == 0 ? v.worst : 0;
     if (v.invalid == 0 && v.worst >= opt.accept_placed) {
@@ -63,8 +65,15 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   bool local = false;
   if (!local_region.empty()) {
     DeformOptions around = opt.deform;
-    around.region = std::move(local_region);
+    around.region = local_region;
     r.deform = deform_mesh(raised, target, held, around);
+    // The wall elements outside the region blended from their edges, as in step 1.
+    if (r.deform.complete && opt.blend &&
+        blend_interiors(r.deform.mesh, boundary, local_region) > 0) {
+      const MeshValidity v = mesh_validity(r.deform.mesh, opt.optimiser.bounds);
+      r.deform.worst_ratio = v.invalid == 0 ? v.worst : 0;
+      r.deform.complete = v.invalid == 0;
+    }
     local = r.deform.complete && r.deform.worst_ratio >= opt.accept_placed;
   }
   if (!local) r.deform = deform_mesh(raised, target, held, opt.deform);

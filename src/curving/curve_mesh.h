@@ -39,6 +39,10 @@ struct CurveOptions {
   /// Step 1's bar: the placed mesh is kept if its worst certified minJ/maxJ is at
   /// least this (> 1: never, always solve).
   double accept_placed = 0.9;
+  /// Step 1 and the elements outside a local solve (placed_rings): the interior nodes of
+  /// the elements with a moved boundary node blended from their edges
+  /// (curving/interior_blending.h), not left straight.
+  bool blend = true;
   /// Placed below accept_placed (or invalid): the elastic solve is first posed only on
   /// the elements below it grown by this many rings (through shared nodes), kept if it
   /// reaches the whole motion with the worst at least accept_placed, else solved as usual
@@ -48,11 +52,12 @@ struct CurveOptions {
   /// corpus at p = 5, 1 / 2 rings / the solve within `reach`: circles6_nolayer 783 / 1156
   /// / 1637 triangles solved, 0.25 / 0.72 / 1.1 s, worst 0.981 / 0.979 / 0.979;
   /// star4_nolayer_coarse 0.04 / 0.09 / 0.37 s, worst 0.920 / 0.913 / 0.913.
-  /// Off by default (0): a mesh left as placed (interior straight) next to the local
-  /// solve costs a downstream solver accuracy. DOLFINx's Poisson study on the plate
-  /// (tests/python/test_dolfinx_convergence.py, p = 3, finest mesh): L2 error 5.3e-7 and
-  /// rate 4.22 after the solve within `reach`, 7.2e-7 and 3.55 with 1 ring.
-  int placed_rings = 0;
+  /// 1 by default since the elements outside the region are blended (`blend`): with
+  /// their interiors left straight it cost a downstream solver accuracy. DOLFINx's Poisson
+  /// study on the plate (scripts/examples/dolfinx_poisson.py, p = 3, finest mesh): L2 error
+  /// 5.3e-7, rate 4.22 after the solve within `reach`; 7.2e-7, 3.55 with 1 ring and
+  /// straight interiors; 4.7e-7, 4.09 with 1 ring and blending (p = 2 unchanged, 4.1e-5).
+  int placed_rings = 1;
   /// ... from this order on: at p = 2 the usual solve is cheap (0.03 s on
   /// star4_nolayer_coarse), and the thesis' rotation experiments (tests/app/rotate_cli_test.cpp,
   /// p = 2) start from its result (theta_max 166 deg, 157 from the local solve's).

@@ -79,15 +79,16 @@ void run(Context& ctx, const CurveOptions& o) {
         "another formulation",
         d.formulation, 100 * r.reached, r.invalid_at_failure));
   if (!c.placed && o.accept_placed <= 1)
-    ctx.log.info("curve: boundary nodes placed, interior straight: {}; solving",
+    ctx.log.info("curve: boundary nodes placed, interior {}: {}; solving",
+                 o.blend ? "blended" : "straight",
                  c.placed_worst > 0
                      ? fmt::format("worst minJ/maxJ {:.4f} < {:g}", c.placed_worst, o.accept_placed)
                      : std::string("not certified valid"));
   if (c.placed)
     ctx.log.info(
-        "curve: order {}, boundary nodes placed, interior straight: worst minJ/maxJ {:.4f} >= "
-        "{:g}, no solve",
-        o.order, c.worst_ratio, o.accept_placed);
+        "curve: order {}, boundary nodes placed, interior {}: worst minJ/maxJ {:.4f} >= {:g}, "
+        "no solve",
+        o.order, o.blend ? "blended" : "straight", c.worst_ratio, o.accept_placed);
   else
     ctx.log.info(
         "curve: order {}, formulation {}, nu {}, posed on {} of {} triangles: {} solves, worst "
@@ -142,6 +143,12 @@ Stage curve_stage() {
   t.add("placed", &CurveOptions::accept_placed, real(0),
         "keep the mesh with the boundary nodes placed and the interior straight, without a "
         "solve, if its worst minJ/maxJ is at least this (> 1: always solve)");
+  t.add("blend", &CurveOptions::blend, boolean(),
+        "place the interior nodes of the elements on the boundary by blending their curved "
+        "edges in (0: leave them straight)");
+  t.add("rings", &CurveOptions::placed_rings, integer(0, 1000),
+        "p >= 3: if the placed mesh is poor, first solve only on its elements below `placed` "
+        "grown by this many rings, kept if that reaches `placed` (0: never)");
   t.add("optimise", &CurveOptions::optimise, boolean(),
         "after the elastic solve, optimise the patches round elements below the threshold");
   add_optimiser_options(t, [](CurveOptions& o) -> OptimiseOptions& { return o.optimiser; });

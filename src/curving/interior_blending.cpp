@@ -1,0 +1,67 @@
+#include "curving/interior_blending.h"
+
+#include <algorithm>
+
+#include "element/reference_nodes.h"
+
+namespace homesh {
+
+Eigen::Matrix2Xd blend_interior(const Eigen::Matrix2Xd& X, int p) {
+  Eigen::Matrix2Xd out = X;
+  if (p < 3) return out;
+  const Eigen::Matrix2Xd uv = reference_nodes(p);
+  const int n = static_cast<int>(uv.cols());
+  // Edge k runs from corner a to corner b (Gmsh: 0-1, 1-2, 2-0); its p - 1 nodes sit at
+  // t_j = j / p, j = 1..p-1, from a. q_k(t_j) = deviation / (t_j (1 - t_j)).
+  const int corner_a[3] = {0, 1, 2};
+  const int corner_b[3] = {1, 2, 0};
+  Eigen::Matrix2Xd q[3];
+  Eigen::VectorXd t(p - 1);
+  for (int j = 1; j < p; ++j) t(j - 1) = j * (1.0 / p);
+  for (int k = 0; k < 3; ++k) {
+    q[k].resize(2, p - 1);
+    const Eigen::Vector2d xa = X.col(corner_a[k]), xb = X.col(corner_b[k]);
+    for (int j = 0; j < p - 1; ++j) {
+      const Eigen::Vector2d chord = (1 - t(j)) * xa + t(j) * xb;
+      q[k].col(j) = (X.col(3 + k * (p - 1) + j) - chord) / (t(j) * (1 - t(j)));
+    }
+  }
+  // q_k at s, by Lagrange interpolation through the t_j.
+  auto q_at = [&](int k, double s) {
+    Eigen::Vector2d v = Eigen::Vector2d::Zero();
+    for (int j = 0; j < p - 1; ++j) {
+      double w = 1;
+      for (int i = 0; i < p - 1; ++i)
+        if (i != j) w *= (s - t(i)) / (t(j) - t(i));
+      v += w * q[k].col(j);
+    }
+    return v;
+  };
+  for (int i = 3 * p; i < n; ++i) {
+    const double l[3] = {1 - uv(0, i) - uv(1, i), uv(0, i), uv(1, i)};
+    Eigen::Vector2d x = l[0] * X.col(0) + l[1] * X.col(1) + l[2] * X.col(2);
+    for (int k = 0; k < 3; ++k) {
+      const double la = l[corner_a[k]], lb = l[corner_b[k]];
+      x += la * lb * q_at(k, (1 + lb - la) / 2);
+    }
+    out.col(i) = x;
+  }
+  return out;
+}
+
+int blend_interiors(Mesh& m, const std::vector<bool>& moved, const std::vector<int>& except) {
+  const int p = m.order;
+  if (p < 3) return 0;
+  int blended = 0;
+  for (int e = 0; e < m.num_triangles(); ++e) {
+    bool touched = false;
+    for (int k = 3; k < 3 * p && !touched; ++k) touched = moved[m.tri(k, e)];
+    if (!touched || std::binary_search(except.begin(), except.end(), e)) continue;
+    const Eigen::Matrix2Xd X = blend_interior(m.triangle_nodes(e), p);
+    for (Eigen::Index k = 3 * p; k < m.tri.rows(); ++k) m.x.col(m.tri(k, e)) = X.col(k);
+    ++blended;
+  }
+  return blended;
+}
+
+}  // namespace homesh
