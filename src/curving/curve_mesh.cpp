@@ -4,6 +4,7 @@
 
 #include "core/raise_order.h"
 #include "curving/interior_blending.h"
+#include "curving/wall_propagation.h"
 #include "quality/mesh_validity.h"
 
 namespace homesh {
@@ -25,14 +26,39 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   const std::vector<bool> boundary = boundary_nodes(raised);
   CurveResult r;
   std::vector<int> local_region;  // step 1's poor elements and their rings
+  Mesh placed;                    // step 1's best guess, if step 1 ran
 
-  // 1. Placed: the boundary nodes at their targets, the interior straight.
+  // 1. Placed: the boundary nodes at their targets, the interior blended from the wall
+  // elements' edges, or else moved with the wall near it; the better guess is kept.
   if (opt.accept_placed <= 1) {
-    Mesh placed = raised;
-    for (int i = 0; i < placed.num_nodes(); ++i)
-      if (boundary[i]) placed.x.col(i) = target.col(i);
-    if (opt.blend) blend_interiors(placed, boundary);
-    const MeshValidity v = mesh_validity(placed, opt.optimiser.bounds);
+    Mesh on_wall = raised;
+    for (int i = 0; i < on_wall.num_nodes(); ++i)
+      if (boundary[i]) on_wall.x.col(i) = target.col(i);
+    std::vector<Mesh> guesses;
+    if (opt.blend) blend_interiors(on_wall, boundary);
+    guesses.push_back(on_wall);
+    if (opt.propagate > 0) {
+      std::vector<bool> free(raised.num_nodes());
+      const std::vector<bool> vertex = vertex_nodes(raised);
+      for (int i = 0; i < raised.num_nodes(); ++i)
+        free[i] = !boundary[i] && !(opt.fixed_vertices && vertex[i]);
+      guesses.push_back(on_wall);
+      // Over the whole interior, blended or not: propagation moves every free node near it.
+      for (int i = 0; i < raised.num_nodes(); ++i)
+        if (free[i]) guesses.back().x.col(i) = raised.x.col(i);
+      guesses.back().x += propagate_wall_displacement(raised, target, free, opt.propagate);
+    }
+    MeshValidity v;
+    for (std::size_t g = 0; g < guesses.size(); ++g) {
+      MeshValidity w = mesh_validity(guesses[g], opt.optimiser.bounds);
+      const bool better =
+          g == 0 || (w.invalid < v.invalid) || (w.invalid == v.invalid && w.worst > v.worst);
+      if (better) {
+        v = std::move(w);
+        placed = std::move(guesses[g]);
+      }
+      if (v.invalid == 0 && v.worst >= opt.accept_placed) break;
+    }
     r.placed_worst = v.invalid == 0 ? v.worst : 0;
     if (v.invalid == 0 && v.worst >= opt.accept_placed) {
       r.placed = true;
@@ -64,16 +90,19 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   }
   bool local = false;
   if (!local_region.empty()) {
+    // Every node but those inside the region (on none of the triangles outside it) is
+    // prescribed at step 1's guess; the region is solved from the straight mesh to it.
+    std::vector<bool> outside(raised.num_nodes(), false);
+    std::vector<bool> in_region(raised.num_triangles(), false);
+    for (int e : local_region) in_region[e] = true;
+    for (int e = 0; e < raised.num_triangles(); ++e)
+      if (!in_region[e])
+        for (int k = 0; k < raised.tri.rows(); ++k) outside[raised.tri(k, e)] = true;
+    std::vector<bool> prescribed = held;
+    for (int i = 0; i < raised.num_nodes(); ++i) prescribed[i] = prescribed[i] || outside[i];
     DeformOptions around = opt.deform;
     around.region = local_region;
-    r.deform = deform_mesh(raised, target, held, around);
-    // The wall elements outside the region blended from their edges, as in step 1.
-    if (r.deform.complete && opt.blend &&
-        blend_interiors(r.deform.mesh, boundary, local_region) > 0) {
-      const MeshValidity v = mesh_validity(r.deform.mesh, opt.optimiser.bounds);
-      r.deform.worst_ratio = v.invalid == 0 ? v.worst : 0;
-      r.deform.complete = v.invalid == 0;
-    }
+    r.deform = deform_mesh(raised, placed.x, prescribed, around);
     local = r.deform.complete && r.deform.worst_ratio >= opt.accept_placed;
   }
   if (!local) r.deform = deform_mesh(raised, target, held, opt.deform);

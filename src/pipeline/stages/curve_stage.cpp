@@ -146,6 +146,9 @@ Stage curve_stage() {
   t.add("blend", &CurveOptions::blend, boolean(),
         "place the interior nodes of the elements on the boundary by blending their curved "
         "edges in (0: leave them straight)");
+  t.add("propagate", &CurveOptions::propagate, real(0),
+        "> 0: the first guess moves the nodes near the wall with the nearest wall edge's "
+        "bulge, fading over this many edge lengths (0: only the wall elements' interiors)");
   t.add("rings", &CurveOptions::placed_rings, integer(0, 1000),
         "p >= 3: if the placed mesh is poor, first solve only on its elements below `placed` "
         "grown by this many rings, kept if that reaches `placed` (0: never)");
