@@ -141,7 +141,8 @@ Stage curve_stage() {
       "the boundary triangles of the moving boundary, the rest held still (a boundary "
       "layer's thin elements do not shrink this region); the whole mesh if that fails");
   t.add("placed", &CurveOptions::accept_placed, real(0),
-        "keep the mesh with the boundary nodes placed and the interior straight, without a "
+        "keep the mesh with the boundary nodes placed and the interior blended (or propagated), "
+        "without a "
         "solve, if its worst minJ/maxJ is at least this (> 1: always solve)");
   t.add("blend", &CurveOptions::blend, boolean(),
         "place the interior nodes of the elements on the boundary by blending their curved "
@@ -167,7 +168,8 @@ Stage curve_stage() {
   return make_stage<CurveOptions>(
       "curve",
       "order p with boundary nodes on the CAD (or on splines rebuilt from a bare .msh), "
-      "interior straight if that is good enough, else by the elastic analogy, then the "
+      "interior blended from the curved edges if that is good enough, else by the elastic "
+      "analogy (first round the poor elements only), then the "
       "optimiser round the elements left poor (wall nodes sliding on the CAD), valid",
       t, run);
 }
