@@ -26,7 +26,10 @@ referee) is killed and recorded as "timeout".
 Usage:
   PYTHONPATH=build/python /usr/bin/python3 scripts/bench/curving_corpus.py
       [--cases PATTERN] [--orders 2,3,4,5] [--out out/bench/corpus] [--timeout 120]
-      [--methods homesh,gmsh*] [--rebuild] [--report-only]
+      [--methods homesh,gmsh*] [--variant k=v:k=v ...] [--rebuild] [--report-only]
+--variant adds a method "homesh k=v:k=v" (homesh.curve with those options): choosing a
+default on the corpus, its summary is reported beside the defaults' against the same Gmsh
+rows (--methods '' runs the variants alone, into an OUT that holds a run's rows).
 Writes OUT/curving_corpus.csv (one row per case, p and method, appended as it goes: a run
 stopped halfway keeps its rows, and --report-only remakes the table and plot from it),
 OUT/curving_corpus.png and OUT/curving_corpus.md (per case and p: homesh, Gmsh's best valid
@@ -63,6 +66,14 @@ def first_line(e):
     return str(e).splitlines()[0] if str(e) else type(e).__name__
 
 
+def variant_options(method):
+    """The curve options of a method "homesh NAME" (NAME: "k=v:k=v", see --variant)."""
+    words = method.split(" ", 1)
+    if len(words) == 1:
+        return {}
+    return dict(kv.split("=", 1) for kv in words[1].split(":"))
+
+
 def curved_to(gmsh, p):
     return all(gmsh.model.mesh.getElementProperties(t)[2] == p
                for t in gmsh.model.mesh.getElementTypes(2))
@@ -84,10 +95,10 @@ def child(conn, name, msh, p, method, rebuild):
     error, stage = "", ""
     t = time.perf_counter()
     try:
-        if method == "homesh":
+        if method.split(" ")[0] == "homesh":
             import homesh
             homesh.set_quiet(True)
-            r = homesh.curve(p=p)
+            r = homesh.curve(p=p, **variant_options(method))
             logged = [float(v) for k, v in (r.get("results") or {}).items() if "seconds" in k]
             stage = sum(logged) if logged else ""
         else:
@@ -183,13 +194,14 @@ def valid(r):
     return r["status"] == "ok" and r["invalid"] == 0
 
 
-def analyse(rows):
-    """One entry per (case, p) that has a homesh row."""
+def analyse(rows, mine="homesh"):
+    """One entry per (case, p) that has a row of method `mine` (homesh or a variant)."""
     out = []
+    me = mine
     keys = list(dict.fromkeys((r["case"], r["p"]) for r in rows))
     for key in keys:
         mine = [r for r in rows if (r["case"], r["p"]) == key]
-        h = next((r for r in mine if r["method"] == "homesh"), None)
+        h = next((r for r in mine if r["method"] == me), None)
         if h is None:
             continue
         g = [r for r in mine if r["method"].startswith("gmsh") and valid(r)]
@@ -342,13 +354,46 @@ def report(csv_path, outdir):
           "method as method: worst / seconds; targets; homesh's time over Gmsh's fastest valid "
           "method's.\n\n## Per case\n\n" + per_case_markdown(E) + "\n## Per case and order\n\n"
           + markdown(E))
+    variants = sorted({r["method"] for r in rows if r["method"].startswith("homesh ")})
+    if variants:
+        md += "\n## Variants of homesh's defaults, on the same Gmsh rows\n\n"
+        for v in variants:
+            md += f"- `{v}`: " + summary_line(analyse(rows, v)) + "\n"
     with open(os.path.join(outdir, "curving_corpus.md"), "w") as f:
         f.write(md)
     plot(E, os.path.join(outdir, "curving_corpus.png"))
     print(summary_line(E))
+    for v in variants:
+        print(f"{v}: " + summary_line(analyse(rows, v)))
 
 
 # ---------------------------------------------------------------- main
+
+def reuse(csv_path, other, pattern):
+    """Appends to csv_path the rows of `other` whose method matches `pattern`, for the
+    (case, p) pairs csv_path has and lacks that method for; the same linear meshes are
+    checked by their triangle counts."""
+    mine = list(csv.DictReader(open(csv_path)))
+    have = {(r["case"], r["p"], r["method"]) for r in mine}
+    triangles = {(r["case"], r["p"]): r["triangles"] for r in mine}
+    added = 0
+    with open(csv_path, "a", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=FIELDS)
+        for r in csv.DictReader(open(other)):
+            key = (r["case"], r["p"])
+            if (not fnmatch.fnmatch(r["method"], pattern) or key not in triangles
+                    or (r["case"], r["p"], r["method"]) in have):
+                continue
+            if r["triangles"] != triangles[key]:
+                print(f"reuse: {r['case']} has {r['triangles']} triangles in {other}, "
+                      f"{triangles[key]} here: not reused")
+                continue
+            r["error"] = (f"reused from {os.path.basename(other)}; " + r["error"]).strip("; ")
+            w.writerow({k: r.get(k, "") for k in FIELDS})
+            have.add((r["case"], r["p"], r["method"]))
+            added += 1
+    print(f"reuse: {added} rows of '{pattern}' from {other}")
+
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -356,23 +401,34 @@ def main(argv=None):
     ap.add_argument("--orders", default="2,3,4,5")
     ap.add_argument("--methods", default=",".join(METHODS),
                     help="comma-separated method names or globs (default: all)")
+    ap.add_argument("--variant", action="append", default=[],
+                    help="also run homesh with these curve options, k=v:k=v (repeatable); "
+                         "its rows are method 'homesh k=v:k=v'")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "bench", "corpus"))
     ap.add_argument("--timeout", type=float, default=60.0,
                     help="seconds a method may take (curving + referee) before it is killed")
     ap.add_argument("--rebuild", action="store_true",
                     help="build each case afresh in every method's process (default: once)")
+    ap.add_argument("--reuse", metavar="CSV:PATTERN", action="append", default=[],
+                    help="before reporting, copy the rows of the methods matching PATTERN "
+                         "(e.g. 'gmsh elastic*': deterministic, but slow) from an earlier run's "
+                         "CSV for the cases and orders this run has and they lack, marked "
+                         "'reused from CSV' (their seconds are that run's); repeatable")
     ap.add_argument("--report-only", action="store_true",
                     help="only remake the table and plot from OUT/curving_corpus.csv")
     args = ap.parse_args(argv)
     os.makedirs(args.out, exist_ok=True)
     csv_path = os.path.join(args.out, "curving_corpus.csv")
+    for spec in args.reuse:
+        reuse(csv_path, *spec.rsplit(":", 1))
     if args.report_only:
         report(csv_path, args.out)
         return 0
     cases = corpus.select(args.cases)
     orders = [int(p) for p in args.orders.split(",")]
     methods = [m for m in METHODS
-               if any(fnmatch.fnmatch(m, pat) for pat in args.methods.split(","))]
+               if any(fnmatch.fnmatch(m, pat) for pat in args.methods.split(",") if pat)]
+    methods += ["homesh " + v for v in args.variant]
     meshes = os.path.join(args.out, "meshes")
     os.makedirs(meshes, exist_ok=True)
     done = {}

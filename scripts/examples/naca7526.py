@@ -12,8 +12,8 @@ A worked example of `import homesh` (run with PYTHONPATH=build/python):
      ratio 1.2, with a fan of 5 normals at the trailing edge (its domain angle
      is 326 deg, hence fan_angle = 320); skipped, with a note, if this build of
      homesh has no `layers` stage;
-  4. homesh.curve(p=4): boundary nodes on the CAD, interior by the elastic
-     analogy in certified-valid increments;
+  4. homesh.curve(p=4, placed=0.99): boundary nodes on the CAD, interior by the
+     elastic analogy (placed=0.99: the first guess, 0.962, is not kept);
   5. homesh.quality: certified validity (Bezier bounds of det J) and Q4, Q17 as
      views; homesh.info; homesh.write (mesh, views, .opt sidecar);
   6. with --picture PNG: the Q4 view with the mesh, zoomed on the aerofoil, as
@@ -162,7 +162,7 @@ def main():
                           normals="multi", fan=5, fan_angle=320)
         else:
             print("note: this homesh has no 'layers' stage: no boundary layers", flush=True)
-    homesh.curve(p=args.order)
+    homesh.curve(p=args.order, placed=0.99)  # solved, not the first guess (naca7526.sh)
     homesh.quality(measures="Q4,Q17")
     homesh.info()
     homesh.write(args.msh)

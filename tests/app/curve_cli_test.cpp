@@ -88,7 +88,7 @@ TEST_CASE("curve: boundary layers curved near the wall only, better than the pla
   // NACA-7526, 10 layers from 1e-3: the solve is posed on the layers and a little beyond.
   auto r = run_homesh(geo +
                       "naca.geo -m mesh -m layers:walls=aerofoil:n=10:first=1e-3:ratio=1.3 "
-                      "-m curve:p=2");
+                      "-m curve:p=2:placed=2");  // placed > 1: the solve, not a guess
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto [near, all, naca] = curve_log(r.output);
@@ -97,7 +97,9 @@ TEST_CASE("curve: boundary layers curved near the wall only, better than the pla
 
   // The plate, 18 layers from 1e-4, p = 3: 0.973 against 0.926.
   const std::string base =
-      geo + "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 -m curve:p=3";
+      geo +
+      "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 -m "
+      "curve:p=3:placed=2";
   r = run_homesh(base);
   const double plate = std::get<2>(curve_log(r.output));
   r = run_homesh(base + ":formulation=plain:nu=0.4:increments=4:reach=0:vertices=free");
@@ -125,8 +127,8 @@ TEST_CASE("curve: boundary layers curved near the wall only, better than the pla
                      "plate_hole.geo -m mesh -m layers:walls=hole:n=18:first=1e-4:ratio=1.3 " + lin)
               .exit_code == 0);
   REQUIRE(run_homesh(lin + " -m curve:p=3 " + out).exit_code == 0);
-  REQUIRE(run_homesh(lin + " -m curve:p=3:vertices=free:reach=0 " + out + ".free.msh").exit_code ==
-          0);
+  REQUIRE(run_homesh(lin + " -m curve:p=3:vertices=free:reach=0:placed=2 " + out + ".free.msh")
+              .exit_code == 0);
   homesh::test::GmshSession session;
   gmsh::open(lin);
   const homesh::Mesh a = homesh::gmsh_adapter::read_model(lin);
