@@ -1,6 +1,6 @@
 #pragma once
 // Elements in the order Gmsh writes them: by entity tag. Gmsh writes a mesh
-// entity by entity (points, lines, triangles, each by ascending entity tag),
+// entity by entity (points, lines, triangles, quadrilaterals, each by ascending entity tag),
 // and a view's element data in element-tag order; homesh tags elements by
 // their position (Mesh::triangle_tag). With the elements grouped by entity the
 // two orders agree, which meshio needs (it assigns element data to the
@@ -13,8 +13,10 @@
 
 namespace homesh {
 
-/// Reorders m's points, lines and triangles stably by entity tag. Returns the
-/// triangle permutation, new position -> old (empty if m was already grouped).
+/// Reorders m's points, lines, triangles and quadrilaterals stably by entity
+/// tag. Returns the permutation of the 2D elements (triangles, then
+/// quadrilaterals, as core/mesh.h numbers them), new position -> old (empty if
+/// the 2D elements were already grouped).
 std::vector<int> group_by_entity(Mesh& m);
 
 }  // namespace homesh

@@ -106,6 +106,10 @@ ModelTags write_model(const Mesh& m) {
                  tags.first_line);
   add_elements(gmsh::model::mesh::getElementType("Triangle", m.order), m.tri, m.tri_entity,
                tags.first_triangle);
+  tags.first_quad = m.quad_tag(0);
+  if (m.num_quads() > 0)
+    add_elements(gmsh::model::mesh::getElementType("Quadrangle", m.order), m.quad, m.quad_entity,
+                 tags.first_quad);
   return tags;
 }
 

@@ -7,10 +7,13 @@
 namespace homesh::gmsh_adapter {
 
 /// Element tags given to the mesh written into the model: point elements get
-/// 1.., lines next, triangles last; triangle e has tag first_triangle + e.
+/// 1.., lines next, then triangles, quadrilaterals last; triangle e has tag
+/// first_triangle + e, quadrilateral e first_quad + e = first_triangle +
+/// num_triangles + e (2D element e of core/mesh.h has first_triangle + e).
 struct ModelTags {
   std::size_t first_line = 1;
   std::size_t first_triangle = 1;
+  std::size_t first_quad = 1;
 };
 
 /// Replaces the mesh of the current Gmsh model with `m`. Gmsh 4.8 has no bulk
