@@ -226,8 +226,16 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
   return out;
 }
 
+void check_vtu_mesh(const std::string& path, const Mesh& mesh) {
+  if (mesh.num_quads() > 0)
+    throw Error(path + ": the .vtu output does not handle quadrilaterals yet (mesh has " +
+                std::to_string(mesh.num_quads()) + " '" + quad_type_name(mesh.order) +
+                "'); write a .msh instead");
+}
+
 void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<Field>& fields,
                const std::string& provenance, const ElementTags& tags) {
+  check_vtu_mesh(path, mesh);
   std::string text;
   try {
     text = vtu_text(mesh, fields, provenance, tags);

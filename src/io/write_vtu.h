@@ -56,6 +56,10 @@ struct ElementTags {
   std::vector<std::size_t> lines;      ///< #lines, or empty
 };
 
+/// Throws homesh::Error naming `path` if `mesh` holds quadrilaterals: VTK's
+/// Lagrange quadrilateral has its own node order, not mapped yet.
+void check_vtu_mesh(const std::string& path, const Mesh& mesh);
+
 /// The `.vtu` text of `mesh` and `fields` (each 1 or (p+1)(p+2)/2 by
 /// #triangles, see core/field.h), with `provenance` (e.g. the command line)
 /// in an XML comment after the declaration. Throws homesh::Error if a field's
@@ -65,7 +69,8 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
 
 /// Writes vtu_text(mesh, fields, provenance, tags) to `path` atomically
 /// (core/atomic_file.h), every step checked; throws homesh::Error naming
-/// `path` and the cause, the previous file then untouched.
+/// `path` and the cause, the previous file then untouched. A mesh holding
+/// quadrilaterals is refused (check_vtu_mesh).
 void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<Field>& fields,
                const std::string& provenance, const ElementTags& tags = {});
 

@@ -142,14 +142,14 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
   if (!ctx.mesh && !meshes) {
     ctx.log.info("{} has no mesh: meshing it with the mesh stage's defaults", ctx.input);
     const Stage& m = stage("mesh");
-    m.run(ctx, m.parse({}));
+    run_stage(m, ctx, m.parse({}));
   }
   set_progress(progress_wanted(ctx.log.quiet));
   for (std::size_t k = 0; k < plan.size(); ++k) {
     const Progress stage_label("stage " + std::to_string(k + 1) + "/" +
                                    std::to_string(plan.size()) + " " + plan[k].first->name,
                                0);
-    plan[k].first->run(ctx, plan[k].second);
+    run_stage(*plan[k].first, ctx, plan[k].second);
     group_context_by_entity(ctx);
   }
 }
@@ -164,14 +164,16 @@ void write_output(const std::string& path, const std::string& provenance, Contex
     ctx.log.info("{}", validity_line(m, v));
     ctx.set_field({kValidityFieldName, Field::Kind::Element, v.ratio.transpose(), true, true});
   }
+  const std::string elements = m.num_quads() > 0 ? "elements" : "triangles";
   if (v.invalid > 0 && !ctx.keep_invalid)
-    throw Error(path + ": not written: " + std::to_string(v.invalid) +
-                " triangles are not certified valid (keep them with --keep-invalid)");
-  if (v.invalid > 0) ctx.log.warn("{}: writing {} invalid triangles as asked", path, v.invalid);
+    throw Error(path + ": not written: " + std::to_string(v.invalid) + " " + elements +
+                " are not certified valid (keep them with --keep-invalid)");
+  if (v.invalid > 0) ctx.log.warn("{}: writing {} invalid {} as asked", path, v.invalid, elements);
 
   std::string record = provenance;
   for (const std::string& note : ctx.notes) record += "\n" + note;
   if (format == OutputFormat::vtu) {
+    check_vtu_mesh(path, m);
     write_vtu(path, m, ctx.fields, record);
     ctx.log.info("wrote {} (order {}, {} triangles, {} fields)", path, m.order, m.num_triangles(),
                  ctx.fields.size());
@@ -184,8 +186,10 @@ void write_output(const std::string& path, const std::string& provenance, Contex
     views = gmsh_adapter::add_views(ctx.fields, tags);
   });
   gmsh_adapter::write_msh(path, views, record);
-  ctx.log.info("wrote {} (order {}, {} triangles, {} views)", path, m.order, m.num_triangles(),
-               views.size());
+  const std::string quads =
+      m.num_quads() > 0 ? fmt::format(", {} quadrilaterals", m.num_quads()) : "";
+  ctx.log.info("wrote {} (order {}, {} triangles{}, {} views)", path, m.order, m.num_triangles(),
+               quads, views.size());
 }
 
 }  // namespace homesh

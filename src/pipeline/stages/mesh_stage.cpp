@@ -64,7 +64,7 @@ Stage mesh_stage() {
   });
   return make_stage<MeshOptions>(
       "mesh", "new linear triangle mesh of the input's CAD by Gmsh (replaces any mesh)", t, run,
-      true);
+      true, true);
 }
 
 }  // namespace homesh
