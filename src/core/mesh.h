@@ -94,18 +94,20 @@ struct Mesh {
   /// Centroid of the corners of 2D element e (where reports place it):
   /// triangle e, or quadrilateral e - num_triangles() beyond the triangles.
   Eigen::Vector2d corner_centroid(int e) const;
-  /// The Gmsh element tag of triangle e once homesh writes the mesh into a
-  /// model or a file (gmsh/write_model.h): tags 1.. go to the point elements,
-  /// then the lines, then the triangles in order, then the quadrilaterals (so
-  /// triangle_tag(num_triangles() + q) is quadrilateral q's). Reports name
-  /// elements by it, so a user finds them in the GUI and through the API.
-  std::size_t triangle_tag(int e) const {
-    return 1 + point_node.size() + static_cast<std::size_t>(num_lines()) +
-           static_cast<std::size_t>(e);
-  }
-  /// The Gmsh element tag of quadrilateral e: the quadrilaterals' tags follow
-  /// the triangles'.
-  std::size_t quad_tag(int e) const { return triangle_tag(num_triangles() + e); }
+  /// The Gmsh element tag of 2D element e (triangle e, or quadrilateral
+  /// e - num_triangles()) once homesh writes the mesh into a model or a file
+  /// (gmsh/write_model.h): tags 1.. go to the point elements, then the lines,
+  /// then the 2D elements surface by surface in increasing entity tag, each
+  /// surface's triangles before its quadrilaterals. That is the order Gmsh
+  /// writes them in a .msh, and a view's element data is written in tag
+  /// order: meshio, which pairs them by position, needs the two to agree. On a
+  /// mesh without quadrilaterals triangle e has tag 1 + #points + #lines + e;
+  /// with some, the 2D elements must be grouped by entity (core/group_by_entity.h),
+  /// as they are once read and after every stage. Reports name elements by
+  /// it, so a user finds them in the GUI and through the API.
+  std::size_t triangle_tag(int e) const;
+  /// The Gmsh element tag of quadrilateral q: triangle_tag(num_triangles() + q).
+  std::size_t quad_tag(int q) const { return triangle_tag(num_triangles() + q); }
 };
 
 /// Highest element order homesh supports (the basis stays accurate to ~1e-10).
