@@ -18,7 +18,7 @@ struct Field {
   /// of core/mesh.h). ElementNode: nodes-per-element by #2D elements, or by
   /// #elements if `elements` lists some; on a mesh with quadrilaterals the rows
   /// are (p+1)^2 and a triangle's (p+1)(p+2)/2 node values are the top rows of
-  /// its column (the rows below are unused).
+  /// its column (the rows below are not written).
   Eigen::MatrixXd values;
   /// A quality in [0, 1], 1 ideal, <= 0 invalid: drawn on the fixed range
   /// [0, 1]; points and lines of the file get 1 in its element data. Otherwise

@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <limits>
 #include <optional>
 
 #include "element/quad_reference_nodes.h"
@@ -153,7 +154,9 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
   r.measures.resize(qs.size());
   for (auto& out : r.measures) {
     out.element_min.resize(n);
-    out.node_values.resize(m.num_quads() > 0 ? quad_node_count(p) : triangle_node_count(p), n);
+    // With quadrilaterals, a triangle's column has rows below its nodes: NaN.
+    out.node_values.setConstant(m.num_quads() > 0 ? quad_node_count(p) : triangle_node_count(p), n,
+                                std::numeric_limits<double>::quiet_NaN());
   }
 #pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
   {

@@ -28,7 +28,7 @@ struct MeshMeasure {
   Eigen::VectorXd element_min;
   /// nodes-per-element by #2D elements values at the element nodes, Gmsh
   /// order; with quadrilaterals (p+1)^2 rows, a triangle's values in the top
-  /// (p+1)(p+2)/2 (core/field.h).
+  /// (p+1)(p+2)/2, NaN below (core/field.h).
   Eigen::MatrixXd node_values;
 };
 
