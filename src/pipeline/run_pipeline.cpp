@@ -172,11 +172,12 @@ void write_output(const std::string& path, const std::string& provenance, Contex
 
   std::string record = provenance;
   for (const std::string& note : ctx.notes) record += "\n" + note;
+  const std::string quads =
+      m.num_quads() > 0 ? fmt::format(", {} quadrilaterals", m.num_quads()) : "";
   if (format == OutputFormat::vtu) {
-    check_vtu_mesh(path, m);
     write_vtu(path, m, ctx.fields, record);
-    ctx.log.info("wrote {} (order {}, {} triangles, {} fields)", path, m.order, m.num_triangles(),
-                 ctx.fields.size());
+    ctx.log.info("wrote {} (order {}, {} triangles{}, {} fields)", path, m.order, m.num_triangles(),
+                 quads, ctx.fields.size());
     return;
   }
 
@@ -186,8 +187,6 @@ void write_output(const std::string& path, const std::string& provenance, Contex
     views = gmsh_adapter::add_views(ctx.fields, tags);
   });
   gmsh_adapter::write_msh(path, views, record);
-  const std::string quads =
-      m.num_quads() > 0 ? fmt::format(", {} quadrilaterals", m.num_quads()) : "";
   ctx.log.info("wrote {} (order {}, {} triangles{}, {} views)", path, m.order, m.num_triangles(),
                quads, views.size());
 }
