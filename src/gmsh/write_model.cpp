@@ -105,6 +105,13 @@ ModelTags write_model(const Mesh& m) {
   tags.first_line = 1 + m.point_node.size();
   tags.first_triangle = tags.first_line + static_cast<std::size_t>(m.num_lines());
   tags.triangles = m.num_triangles();
+  // Mesh::triangle_tag numbers the 2D elements in file order only if they are
+  // grouped by entity (core/group_by_entity.h): otherwise tags could repeat.
+  if (m.num_quads() > 0 && !(std::is_sorted(m.tri_entity.begin(), m.tri_entity.end()) &&
+                             std::is_sorted(m.quad_entity.begin(), m.quad_entity.end())))
+    throw Error(
+        "write_model: the triangles and quadrilaterals are not grouped by entity "
+        "(group_by_entity)");
   tags.element.resize(static_cast<std::size_t>(m.num_elements_2d()));
   for (int e = 0; e < m.num_elements_2d(); ++e) tags.element[e] = m.triangle_tag(e);
   if (m.num_lines() > 0)

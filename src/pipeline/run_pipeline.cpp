@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/file_extension.h"
+#include "core/group_by_entity.h"
 #include "core/input_limits.h"
 #include "core/progress.h"
 #include "gmsh/exit_guard.h"
@@ -116,6 +117,7 @@ void load_input(const std::string& path, Context& ctx) {
     if (ctx.has_cad) check_model_extent(path);
     if (gmsh_adapter::model_has_mesh()) {
       ctx.mesh = gmsh_adapter::read_model(path);
+      group_by_entity(*ctx.mesh);  // as after every stage: elements tagged in file order
     } else if (ext == "msh") {
       throw Error(path + ": has no triangles (no 2D mesh)");
     } else if (!ctx.has_cad) {
