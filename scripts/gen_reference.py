@@ -83,9 +83,10 @@ def reference(binary, wanted=SECTIONS):
         out += ["### Stage options", options_tables(stages)]
     if "measures" in wanted:
         out += ["### Quality measures",
-                "W is the Jacobian of the map from the ideal (unit equilateral) triangle to the "
-                "physical one, omega = det W, D = W^T W; every measure is normalised to [0, 1], "
-                "1 at the ideal element, 0 where omega <= 0 (invalid).",
+                "W is the Jacobian of the map from the ideal element (the unit equilateral "
+                "triangle; for a quadrilateral the unit square, W = J on the reference square "
+                "[0, 1]^2) to the physical one, omega = det W, D = W^T W; every measure is "
+                "normalised to [0, 1], 1 at the ideal element, 0 where omega <= 0 (invalid).",
                 measures_table(measures(binary))]
     return "\n\n".join(out)
 

@@ -94,7 +94,7 @@ Result run(const std::string& name, const StageOptions& options) {
     set_progress(progress_wanted(ctx.log.quiet));
     {
       const Progress label(s.name, 0);
-      s.run(ctx, checked);
+      run_stage(s, ctx, checked);
       group_context_by_entity(ctx);
     }
 
@@ -146,7 +146,8 @@ void write(const std::string& path, const std::string& provenance, bool keep_inv
     const Validity v = summary(m, certified, tags);
     if (v.invalid > 0 && !keep_invalid)
       throw Error(path + ": not written: " + std::to_string(v.invalid) +
-                  " triangles are not certified valid (keep them with keep_invalid)");
+                  (m.num_quads() > 0 ? " elements" : " triangles") +
+                  " are not certified valid (keep them with keep_invalid)");
     if (format == OutputFormat::vtu) {
       // The views become the .vtu's fields; the certified minJ/maxJ is always one of them.
       std::vector<Field> fields = gmsh_adapter::read_views(m, tags);

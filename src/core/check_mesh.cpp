@@ -20,27 +20,62 @@ std::string where(const Mesh& m, int e) {
   return s.str();
 }
 
+std::string where_quad(const Mesh& m, int e) {
+  const Eigen::Vector2d c = m.corner_centroid(m.num_triangles() + e);
+  std::ostringstream s;
+  s << "quadrilateral " << e + 1 << " at (" << c.x() << ", " << c.y() << ")";
+  return s.str();
+}
+
 std::string fmt_number(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
 }
 
-// Every corner edge bounds one or two triangles: a third one sharing it makes
-// the mesh non-manifold, which no stage can curve or layer.
+// Every corner edge bounds one or two elements (triangles or quadrilaterals):
+// a third one sharing it makes the mesh non-manifold, which no stage can curve
+// or layer.
 void check_manifold(const Mesh& m, const std::string& source) {
   std::unordered_map<std::uint64_t, int> uses;
-  uses.reserve(static_cast<std::size_t>(3 * m.num_triangles()));
+  uses.reserve(static_cast<std::size_t>(3 * m.num_triangles() + 4 * m.num_quads()));
+  const auto use = [&](int i, int j, const std::string& element) {
+    const auto a = static_cast<std::uint32_t>(i), b = static_cast<std::uint32_t>(j);
+    const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+    if (++uses[key] > 2)
+      throw Error(source + ": the edge between nodes " + std::to_string(std::min(a, b) + 1) +
+                  " and " + std::to_string(std::max(a, b) + 1) + " of " + element +
+                  " is shared by three or more elements (a non-manifold mesh)");
+  };
   for (int e = 0; e < m.num_triangles(); ++e)
-    for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint32_t>(m.tri(k, e));
-      const auto b = static_cast<std::uint32_t>(m.tri((k + 1) % 3, e));
-      const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-      if (++uses[key] > 2)
-        throw Error(source + ": the edge between nodes " + std::to_string(std::min(a, b) + 1) +
-                    " and " + std::to_string(std::max(a, b) + 1) + " of " + where(m, e) +
-                    " is shared by three or more triangles (a non-manifold mesh)");
+    for (int k = 0; k < 3; ++k) use(m.tri(k, e), m.tri((k + 1) % 3, e), where(m, e));
+  for (int e = 0; e < m.num_quads(); ++e)
+    for (int k = 0; k < 4; ++k) use(m.quad(k, e), m.quad((k + 1) % 4, e), where_quad(m, e));
+}
+
+// A quadrilateral's corners: distinct, counter-clockwise (Gmsh's order), of
+// non-zero area, and not those of another quadrilateral.
+void check_quads(const Mesh& m, const std::string& source) {
+  std::set<std::array<int, 4>> seen;
+  for (int e = 0; e < m.num_quads(); ++e) {
+    std::array<int, 4> c = {m.quad(0, e), m.quad(1, e), m.quad(2, e), m.quad(3, e)};
+    double area2 = 0, scale = 0;
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector2d a = m.x.col(c[k]), b = m.x.col(c[(k + 1) % 4]);
+      area2 += a.x() * b.y() - a.y() * b.x();
+      scale = std::max(scale, (b - a).squaredNorm());
     }
+    std::array<int, 4> sorted = c;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      throw Error(source + ": " + where_quad(m, e) + " repeats a corner node");
+    if (std::abs(area2) <= 1e-12 * scale)
+      throw Error(source + ": " + where_quad(m, e) + " has zero area");
+    if (area2 < 0)
+      throw Error(source + ": " + where_quad(m, e) + " is inverted (its corners run clockwise)");
+    if (!seen.insert(sorted).second)
+      throw Error(source + ": " + where_quad(m, e) + " duplicates another quadrilateral");
+  }
 }
 
 }  // namespace
@@ -72,6 +107,7 @@ void check_mesh(const Mesh& m, const std::string& source) {
     if (!seen.insert(c).second)
       throw Error(source + ": " + where(m, e) + " duplicates another triangle");
   }
+  check_quads(m, source);
   check_manifold(m, source);
 }
 

@@ -8,11 +8,12 @@ namespace homesh {
 
 /// Throws homesh::Error naming `source`, the triangle (1-based) and its
 /// centroid if a node coordinate is not finite or beyond
-/// limits::kMaxCoordinate, an edge is shared by three or more triangles, a triangle repeats a
+/// limits::kMaxCoordinate, an edge is shared by three or more elements, a triangle repeats a
 /// corner, has (near) zero area or is inverted (its corners clockwise: Gmsh orders triangles
-/// counter-clockwise), or two triangles have the same corners. Curved elements whose corners are
-/// fine but whose det J changes sign inside pass: the quality stage reports them and output refuses
-/// them.
+/// counter-clockwise), or two triangles have the same corners; the same for
+/// quadrilaterals (their 4 corners; an edge counts triangles and quadrilaterals). Curved elements
+/// whose corners are fine but whose det J changes sign inside pass: the quality stage reports them
+/// and output refuses them.
 void check_mesh(const Mesh& m, const std::string& source);
 
 }  // namespace homesh

@@ -40,11 +40,22 @@ std::vector<int> group_by_entity(Mesh& m) {
     m.line = permuted(m.line, p);
     m.line_entity = permuted(m.line_entity, p);
   }
-  const auto p = order(m.tri_entity);
-  if (!p.empty()) {
-    m.tri = permuted(m.tri, p);
-    m.tri_entity = permuted(m.tri_entity, p);
+  const auto t = order(m.tri_entity);
+  if (!t.empty()) {
+    m.tri = permuted(m.tri, t);
+    m.tri_entity = permuted(m.tri_entity, t);
   }
+  const auto q = order(m.quad_entity);
+  if (!q.empty()) {
+    m.quad = permuted(m.quad, q);
+    m.quad_entity = permuted(m.quad_entity, q);
+  }
+  if (t.empty() && q.empty()) return {};
+  // One permutation of the 2D elements, triangles then quadrilaterals.
+  const int triangles = m.num_triangles();
+  std::vector<int> p(static_cast<std::size_t>(m.num_elements_2d()));
+  for (int e = 0; e < triangles; ++e) p[e] = t.empty() ? e : t[e];
+  for (int e = 0; e < m.num_quads(); ++e) p[triangles + e] = triangles + (q.empty() ? e : q[e]);
   return p;
 }
 

@@ -1,13 +1,21 @@
 #pragma once
-// The core mesh: planar triangles of one order p, with the CAD/discrete entities
-// and physical groups they are classified on. Pure data over Eigen; the Gmsh
+// The core mesh: planar triangles and quadrilaterals of one order p, with the
+// CAD/discrete entities and physical groups they are classified on. Pure data over Eigen; the Gmsh
 // adapter (src/gmsh/) fills it from, and writes it back to, a Gmsh model.
 //
 // Node ordering follows Gmsh (see element/reference_nodes.h): a triangle of
 // order p lists its 3 corners, the p-1 nodes of edges 0-1, 1-2, 2-0 (each from
 // its first to its second corner), then its interior nodes recursively as a
-// triangle of order p-3. A line of order p lists its 2 end nodes, then its p-1
-// interior nodes from the first end to the second.
+// triangle of order p-3. A quadrilateral of order p (complete Lagrange, (p+1)^2
+// nodes) lists its 4 corners counter-clockwise, the p-1 nodes of edges 0-1,
+// 1-2, 2-3, 3-0 (each from its first to its second corner), then its interior
+// nodes recursively as a quadrilateral of order p-2 (element/quad_reference_nodes.h).
+// A line of order p lists its 2 end nodes, then its p-1 interior nodes from
+// the first end to the second.
+//
+// The 2D elements are numbered triangles first, then quadrilaterals: element e
+// of a per-element field (core/field.h) is triangle e for e < num_triangles(),
+// else quadrilateral e - num_triangles().
 #include <Eigen/Core>
 #include <limits>
 #include <string>
@@ -39,7 +47,8 @@ struct PhysicalGroup {
   std::vector<int> entities;
 };
 
-/// Triangles, boundary lines and model points of one order, with classification.
+/// Triangles, quadrilaterals, boundary lines and model points of one order,
+/// with classification.
 struct Mesh {
   int order = 1;
 
@@ -52,6 +61,11 @@ struct Mesh {
   Eigen::MatrixXi tri;
   /// #triangles tag of the surface each triangle belongs to.
   std::vector<int> tri_entity;
+
+  /// (p+1)^2 by #quads: node indices of each quadrilateral, Gmsh order.
+  Eigen::MatrixXi quad;
+  /// #quads tag of the surface each quadrilateral belongs to.
+  std::vector<int> quad_entity;
 
   /// p+1 by #lines: node indices of each boundary/embedded line, Gmsh order.
   Eigen::MatrixXi line;
@@ -69,19 +83,31 @@ struct Mesh {
   int num_nodes() const { return static_cast<int>(x.cols()); }
   int num_triangles() const { return static_cast<int>(tri.cols()); }
   int num_lines() const { return static_cast<int>(line.cols()); }
+  int num_quads() const { return static_cast<int>(quad.cols()); }
+  /// Triangles and quadrilaterals.
+  int num_elements_2d() const { return num_triangles() + num_quads(); }
 
   /// 2 by (p+1)(p+2)/2 coordinates of the nodes of triangle e, Gmsh order.
   Eigen::Matrix2Xd triangle_nodes(int e) const;
-  /// Centroid of the three corners of triangle e (where reports place it).
+  /// 2 by (p+1)^2 coordinates of the nodes of quadrilateral e, Gmsh order.
+  Eigen::Matrix2Xd quad_nodes(int e) const;
+  /// Centroid of the corners of 2D element e (where reports place it):
+  /// triangle e, or quadrilateral e - num_triangles() beyond the triangles.
   Eigen::Vector2d corner_centroid(int e) const;
-  /// The Gmsh element tag of triangle e once homesh writes the mesh into a
-  /// model or a file (gmsh/write_model.h): tags 1.. go to the point elements,
-  /// then the lines, then the triangles in order. Reports name elements by it,
-  /// so a user finds them in the GUI and through the API.
-  std::size_t triangle_tag(int e) const {
-    return 1 + point_node.size() + static_cast<std::size_t>(num_lines()) +
-           static_cast<std::size_t>(e);
-  }
+  /// The Gmsh element tag of 2D element e (triangle e, or quadrilateral
+  /// e - num_triangles()) once homesh writes the mesh into a model or a file
+  /// (gmsh/write_model.h): tags 1.. go to the point elements, then the lines,
+  /// then the 2D elements surface by surface in increasing entity tag, each
+  /// surface's triangles before its quadrilaterals. That is the order Gmsh
+  /// writes them in a .msh, and a view's element data is written in tag
+  /// order: meshio, which pairs them by position, needs the two to agree. On a
+  /// mesh without quadrilaterals triangle e has tag 1 + #points + #lines + e;
+  /// with some, the 2D elements must be grouped by entity (core/group_by_entity.h),
+  /// as they are once read and after every stage. Reports name elements by
+  /// it, so a user finds them in the GUI and through the API.
+  std::size_t triangle_tag(int e) const;
+  /// The Gmsh element tag of quadrilateral q: triangle_tag(num_triangles() + q).
+  std::size_t quad_tag(int q) const { return triangle_tag(num_triangles() + q); }
 };
 
 /// Highest element order homesh supports (the basis stays accurate to ~1e-10).
@@ -89,5 +115,14 @@ constexpr int kMaxOrder = 10;
 
 /// Number of nodes of a triangle of order p: (p+1)(p+2)/2.
 constexpr int triangle_node_count(int p) { return (p + 1) * (p + 2) / 2; }
+
+/// Number of nodes of a complete quadrilateral of order p: (p+1)^2.
+constexpr int quad_node_count(int p) { return (p + 1) * (p + 1); }
+
+/// Gmsh's name of the complete quadrilateral of order p ("Quadrilateral 9"
+/// for p = 2), for messages.
+inline std::string quad_type_name(int p) {
+  return "Quadrilateral " + std::to_string(quad_node_count(p));
+}
 
 }  // namespace homesh

@@ -48,6 +48,14 @@ void read_entities(Mesh& m) {
   }
 }
 
+bool is_quadrilateral(int type) {
+  std::string name;
+  int dim, order, num_nodes, num_primary;
+  std::vector<double> local;
+  gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
+  return name.rfind("Quadrilateral", 0) == 0;
+}
+
 }  // namespace
 
 bool model_has_mesh() {
@@ -68,7 +76,7 @@ bool model_has_cad() {
   return false;
 }
 
-Mesh read_model(const std::string& source, std::vector<std::size_t>* triangle_tags) {
+Mesh read_model(const std::string& source, std::vector<std::size_t>* element_tags) {
   Mesh m;
   read_entities(m);
 
@@ -130,13 +138,21 @@ Mesh read_model(const std::string& source, std::vector<std::size_t>* triangle_ta
     std::vector<double> local;
     gmsh::model::mesh::getElementProperties(type, name, edim, eorder, num_nodes, local,
                                             num_primary);
-    const bool ok =
-        (dim == 0 && type == 15) || (dim == 1 && name.rfind("Line", 0) == 0) ||
-        (dim == 2 && name.rfind("Triangle", 0) == 0 && num_nodes == triangle_node_count(eorder));
+    const bool triangle = name.rfind("Triangle", 0) == 0;
+    const bool quad = name.rfind("Quadrilateral", 0) == 0;
+    const bool complete = (triangle && num_nodes == triangle_node_count(eorder)) ||
+                          (quad && num_nodes == quad_node_count(eorder));
+    const std::string what = "'" + name + "' (Gmsh type " + std::to_string(type) + ") on entity (" +
+                             std::to_string(dim) + ", " + std::to_string(tag) + ")";
+    if (dim == 2 && (triangle || quad) && !complete)
+      throw Error(source + ": has elements of type " + what +
+                  ", incomplete (serendipity) elements; homesh needs complete Lagrange " +
+                  "triangles and quadrilaterals ((p+1)(p+2)/2 and (p+1)^2 nodes)");
+    const bool ok = (dim == 0 && type == 15) || (dim == 1 && name.rfind("Line", 0) == 0) ||
+                    (dim == 2 && complete);
     if (!ok)
-      throw Error(source + ": has elements of type '" + name + "' (Gmsh type " +
-                  std::to_string(type) + ") on entity (" + std::to_string(dim) + ", " +
-                  std::to_string(tag) + "); homesh needs complete triangles and lines");
+      throw Error(source + ": has elements of type " + what +
+                  "; homesh needs complete triangles, quadrilaterals and lines");
     if (dim > 0) {
       if (order >= 0 && eorder != order)
         throw Error(source + ": mixes element orders " + std::to_string(order) + " and " +
@@ -145,19 +161,30 @@ Mesh read_model(const std::string& source, std::vector<std::size_t>* triangle_ta
     }
     blocks.push_back({tag, nodes});
   };
-  std::vector<ElementBlock> points, lines, tris;
-  if (triangle_tags) triangle_tags->clear();
+  std::vector<ElementBlock> points, lines, tris, quads;
+  std::vector<std::size_t> triangle_tags, quad_tags;
   for (const Entity& e : m.entities) {
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> etags, enodes;
     gmsh::model::mesh::getElements(types, etags, enodes, e.dim, e.tag);
     for (std::size_t t = 0; t < types.size(); ++t) {
-      take(e.dim, e.tag, types[t], enodes[t], e.dim == 0 ? points : e.dim == 1 ? lines : tris);
-      if (e.dim == 2 && triangle_tags)
-        triangle_tags->insert(triangle_tags->end(), etags[t].begin(), etags[t].end());
+      const bool quad = e.dim == 2 && is_quadrilateral(types[t]);
+      take(e.dim, e.tag, types[t], enodes[t],
+           e.dim == 0   ? points
+           : e.dim == 1 ? lines
+           : quad       ? quads
+                        : tris);
+      if (e.dim != 2) continue;
+      std::vector<std::size_t>& tags = quad ? quad_tags : triangle_tags;
+      tags.insert(tags.end(), etags[t].begin(), etags[t].end());
     }
   }
-  if (tris.empty()) throw Error(source + ": has no triangles (no 2D mesh)");
+  if (tris.empty() && quads.empty())
+    throw Error(source + ": has no triangles or quadrilaterals (no 2D mesh)");
+  if (element_tags) {
+    *element_tags = std::move(triangle_tags);
+    element_tags->insert(element_tags->end(), quad_tags.begin(), quad_tags.end());
+  }
   m.order = order;
 
   auto node_index = [&](std::size_t tag) {
@@ -181,6 +208,7 @@ Mesh read_model(const std::string& source, std::vector<std::size_t>* triangle_ta
       }
   };
   fill(tris, triangle_node_count(order), m.tri, m.tri_entity);
+  fill(quads, quad_node_count(order), m.quad, m.quad_entity);
   fill(lines, order + 1, m.line, m.line_entity);
   for (const auto& b : points)
     for (std::size_t tag : b.node_tags) {

@@ -34,11 +34,20 @@ bool model_data(int tag, std::string& type, std::vector<std::size_t>& tags,
 
 }  // namespace
 
-std::vector<Field> read_views(const Mesh& mesh, const std::vector<std::size_t>& triangle_tags) {
-  const int n = triangle_node_count(mesh.order);
-  std::unordered_map<std::size_t, int> triangle_of;
-  for (std::size_t e = 0; e < triangle_tags.size(); ++e)
-    triangle_of[triangle_tags[e]] = static_cast<int>(e);
+std::vector<Field> read_views(const Mesh& mesh, const std::vector<std::size_t>& element_tags) {
+  // Rows of an ElementNode field (core/field.h) and the nodes of element e.
+  const int rows =
+      mesh.num_quads() > 0 ? quad_node_count(mesh.order) : triangle_node_count(mesh.order);
+  const int triangles = mesh.num_triangles(), elements = mesh.num_elements_2d();
+  const auto nodes_of = [&](int e) {
+    return e < triangles ? triangle_node_count(mesh.order) : quad_node_count(mesh.order);
+  };
+  const auto node = [&](int e, int k) {
+    return e < triangles ? mesh.tri(k, e) : mesh.quad(k, e - triangles);
+  };
+  std::unordered_map<std::size_t, int> element_of;
+  for (std::size_t e = 0; e < element_tags.size() && e < static_cast<std::size_t>(elements); ++e)
+    element_of[element_tags[e]] = static_cast<int>(e);
   // Node i of `mesh` is the i-th node in increasing tag order (read_model).
   std::vector<std::size_t> node_tags;
   std::vector<double> coords, params;
@@ -61,13 +70,14 @@ std::vector<Field> read_views(const Mesh& mesh, const std::vector<std::size_t>& 
     if (type == "ElementData" || type == "ElementNodeData") {
       const bool per_node = type == "ElementNodeData";
       f.kind = per_node ? Field::Kind::ElementNode : Field::Kind::Element;
-      f.values = Eigen::MatrixXd::Constant(per_node ? n : 1, mesh.num_triangles(), kNaN);
+      f.values = Eigen::MatrixXd::Constant(per_node ? rows : 1, elements, kNaN);
       for (std::size_t k = 0; k < tags.size(); ++k) {
-        const auto it = triangle_of.find(tags[k]);
-        if (it == triangle_of.end() || data[k].size() != static_cast<std::size_t>(f.values.rows()))
-          continue;
-        f.values.col(it->second) =
-            Eigen::Map<const Eigen::VectorXd>(data[k].data(), f.values.rows());
+        const auto it = element_of.find(tags[k]);
+        if (it == element_of.end()) continue;
+        const int size = per_node ? nodes_of(it->second) : 1;
+        if (data[k].size() != static_cast<std::size_t>(size)) continue;
+        f.values.col(it->second).head(size) =
+            Eigen::Map<const Eigen::VectorXd>(data[k].data(), size);
         found = true;
       }
     } else if (type == "NodeData") {
@@ -78,10 +88,10 @@ std::vector<Field> read_views(const Mesh& mesh, const std::vector<std::size_t>& 
           at_node[static_cast<std::size_t>(it - node_tags.begin())] = data[k][0];
       }
       f.kind = Field::Kind::ElementNode;
-      f.values.resize(n, mesh.num_triangles());
-      for (int e = 0; e < mesh.num_triangles(); ++e)
-        for (int k = 0; k < n; ++k) {
-          f.values(k, e) = at_node[static_cast<std::size_t>(mesh.tri(k, e))];
+      f.values = Eigen::MatrixXd::Constant(rows, elements, kNaN);
+      for (int e = 0; e < elements; ++e)
+        for (int k = 0; k < nodes_of(e); ++k) {
+          f.values(k, e) = at_node[static_cast<std::size_t>(node(e, k))];
           found = found || !std::isnan(f.values(k, e));
         }
     }

@@ -7,12 +7,12 @@
 namespace homesh::gmsh_adapter {
 namespace {
 
-// Element order of the triangles written from `tags` (1 if there are none).
+// Element order of the 2D elements written from `tags` (1 if there are none).
 int triangle_order(const ModelTags& tags, std::size_t num_triangles) {
-  if (num_triangles == 0) return 1;
+  if (num_triangles == 0 || tags.element.empty()) return 1;
   int type = 0;
   std::vector<std::size_t> nodes;
-  gmsh::model::mesh::getElement(tags.first_triangle, type, nodes);
+  gmsh::model::mesh::getElement(tags.element.front(), type, nodes);
   std::string name;
   int dim = 0, order = 1, num_nodes = 0, num_primary = 0;
   std::vector<double> local;
@@ -41,15 +41,21 @@ std::vector<int> add_views(const std::vector<Field>& fields, const ModelTags& ta
       element_tags[k] = first + k;
       data[k] = {f.quality ? 1.0 : 0.0};
     }
+    const int order = triangle_order(tags, triangles);
     for (std::size_t e = 0; e < triangles; ++e) {
-      element_tags[others + e] =
-          tags.first_triangle + (f.elements.empty() ? e : static_cast<std::size_t>(f.elements[e]));
+      const std::size_t index = f.elements.empty() ? e : static_cast<std::size_t>(f.elements[e]);
+      element_tags[others + e] = tags.element.at(index);
+      // An element's node values are the top rows of its column (core/field.h).
       const auto col = f.values.col(static_cast<Eigen::Index>(e));
-      data[others + e].assign(col.data(), col.data() + col.size());
+      const bool quad = index >= static_cast<std::size_t>(tags.triangles);
+      const Eigen::Index size = element ? 1
+                                : quad  ? quad_node_count(order)
+                                        : triangle_node_count(order);
+      data[others + e].assign(col.data(), col.data() + size);
     }
     gmsh::view::addModelData(view, 0, model, element ? "ElementData" : "ElementNodeData",
                              element_tags, data);
-    style_view(view, f, triangle_order(tags, triangles));
+    style_view(view, f, order);
     shown = shown || f.shown;
     view_tags.push_back(view);
   }

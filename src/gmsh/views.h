@@ -13,8 +13,8 @@ namespace homesh::gmsh_adapter {
 /// An Element field is ElementData over every element of the model, points
 /// and lines included with a neutral value (1 for a quality, 0 otherwise):
 /// meshio reads element data only if it covers every element, in the order of
-/// the file. An ElementNode field is ElementNodeData over the triangles
-/// (meshio skips it).
+/// the file. An ElementNode field is ElementNodeData over the triangles and
+/// quadrilaterals (meshio skips it).
 std::vector<int> add_views(const std::vector<Field>& fields, const ModelTags& tags);
 
 }  // namespace homesh::gmsh_adapter

@@ -71,13 +71,13 @@ void add_nodes(const Mesh& m) {
   }
 }
 
-// Adds the columns of `conn` grouped by entity; column k gets tag first + k.
-void add_elements(int type, const Eigen::MatrixXi& conn, const std::vector<int>& entity,
-                  std::size_t first) {
+// Adds the columns of `conn` grouped by entity; column k gets tag tag(k).
+template <class Tag>
+void add_elements(int type, const Eigen::MatrixXi& conn, const std::vector<int>& entity, Tag tag) {
   std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> by_entity;
   for (Eigen::Index k = 0; k < conn.cols(); ++k) {
     auto& [tags, nodes] = by_entity[entity[k]];
-    tags.push_back(first + static_cast<std::size_t>(k));
+    tags.push_back(tag(static_cast<int>(k)));
     for (Eigen::Index i = 0; i < conn.rows(); ++i)
       nodes.push_back(static_cast<std::size_t>(conn(i, k)) + 1);
   }
@@ -94,18 +94,34 @@ ModelTags write_model(const Mesh& m) {
   add_nodes(m);
 
   ModelTags tags;
+  const auto after = [](std::size_t first) {
+    return [first](int k) { return first + static_cast<std::size_t>(k); };
+  };
   if (!m.point_node.empty()) {
     Eigen::MatrixXi conn(1, static_cast<Eigen::Index>(m.point_node.size()));
     for (std::size_t k = 0; k < m.point_node.size(); ++k) conn(0, k) = m.point_node[k];
-    add_elements(15, conn, m.point_entity, 1);
+    add_elements(15, conn, m.point_entity, after(1));
   }
   tags.first_line = 1 + m.point_node.size();
-  tags.first_triangle = m.triangle_tag(0);
+  tags.first_triangle = tags.first_line + static_cast<std::size_t>(m.num_lines());
+  tags.triangles = m.num_triangles();
+  // Mesh::triangle_tag numbers the 2D elements in file order only if they are
+  // grouped by entity (core/group_by_entity.h): otherwise tags could repeat.
+  if (m.num_quads() > 0 && !(std::is_sorted(m.tri_entity.begin(), m.tri_entity.end()) &&
+                             std::is_sorted(m.quad_entity.begin(), m.quad_entity.end())))
+    throw Error(
+        "write_model: the triangles and quadrilaterals are not grouped by entity "
+        "(group_by_entity)");
+  tags.element.resize(static_cast<std::size_t>(m.num_elements_2d()));
+  for (int e = 0; e < m.num_elements_2d(); ++e) tags.element[e] = m.triangle_tag(e);
   if (m.num_lines() > 0)
     add_elements(gmsh::model::mesh::getElementType("Line", m.order), m.line, m.line_entity,
-                 tags.first_line);
+                 after(tags.first_line));
   add_elements(gmsh::model::mesh::getElementType("Triangle", m.order), m.tri, m.tri_entity,
-               tags.first_triangle);
+               [&](int e) { return tags.element[e]; });
+  if (m.num_quads() > 0)
+    add_elements(gmsh::model::mesh::getElementType("Quadrangle", m.order), m.quad, m.quad_entity,
+                 [&](int q) { return tags.element[m.num_triangles() + q]; });
   return tags;
 }
 

@@ -1,16 +1,22 @@
 #pragma once
 // Core mesh -> Gmsh model.
 #include <cstddef>
+#include <vector>
 
 #include "core/mesh.h"
 
 namespace homesh::gmsh_adapter {
 
 /// Element tags given to the mesh written into the model: point elements get
-/// 1.., lines next, triangles last; triangle e has tag first_triangle + e.
+/// 1.., lines next, the 2D elements last (Mesh::triangle_tag).
 struct ModelTags {
   std::size_t first_line = 1;
+  /// The tag after the lines': the first 2D element's.
   std::size_t first_triangle = 1;
+  /// #2D elements tag of each (triangles, then quadrilaterals: core/mesh.h).
+  std::vector<std::size_t> element;
+  /// Number of triangles (2D element e is a quadrilateral from there on).
+  int triangles = 0;
 };
 
 /// Replaces the mesh of the current Gmsh model with `m`. Gmsh 4.8 has no bulk

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/mesh.h"
+#include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
 
 namespace homesh {
@@ -61,6 +62,34 @@ std::vector<int> gmsh_to_vtk_triangle(int p) {
   for (int g : map)
     if (g < 0)
       throw Error("gmsh_to_vtk_triangle: order " + std::to_string(p) + ": node sets differ");
+  return map;
+}
+
+Eigen::Matrix2Xi vtk_quad_node_indices(int p) {
+  check_order(p, "vtk_quad_node_indices");
+  Eigen::Matrix2Xi ij(2, quad_node_count(p));
+  int k = 0;
+  auto put = [&](int i, int j) { ij.col(k++) << i, j; };
+  put(0, 0);
+  put(p, 0);
+  put(p, p);
+  put(0, p);
+  for (int i = 1; i < p; ++i) put(i, 0);
+  for (int j = 1; j < p; ++j) put(p, j);
+  for (int i = 1; i < p; ++i) put(i, p);
+  for (int j = 1; j < p; ++j) put(0, j);
+  for (int j = 1; j < p; ++j)
+    for (int i = 1; i < p; ++i) put(i, j);
+  return ij;
+}
+
+std::vector<int> gmsh_to_vtk_quad(int p) {
+  const Eigen::Matrix2Xi vtk = vtk_quad_node_indices(p);
+  const Eigen::Matrix2Xi gmsh = quad_reference_node_indices(p);
+  std::vector<int> map(static_cast<std::size_t>(vtk.cols()), -1);
+  for (int k = 0; k < vtk.cols(); ++k)
+    for (int g = 0; g < gmsh.cols(); ++g)
+      if (gmsh.col(g) == vtk.col(k)) map[static_cast<std::size_t>(k)] = g;
   return map;
 }
 

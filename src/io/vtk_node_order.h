@@ -1,7 +1,8 @@
 #pragma once
 // VTK's node order of its Lagrange triangle (VTK_LAGRANGE_TRIANGLE = 69) and
-// the map from Gmsh's order, which homesh's Mesh uses
-// (element/reference_nodes.h), to VTK's; the order of a line's nodes along it.
+// quadrilateral (VTK_LAGRANGE_QUADRILATERAL = 70) and the maps from Gmsh's
+// order, which homesh's Mesh uses (element/reference_nodes.h,
+// element/quad_reference_nodes.h), to VTK's; the order of a line's nodes along it.
 //
 // VTK orders a triangle of order p by its barycentric index
 // (vtkHigherOrderTriangle::BarycentricIndex, VTK 9.1): the 3 corners, the p-1
@@ -29,6 +30,19 @@ Eigen::Matrix2Xi vtk_triangle_node_indices(int p);
 /// (p+1)(p+2)/2 Gmsh node numbers of a triangle of order p >= 1 in VTK order:
 /// VTK node k is Gmsh node map[k] (the node at the same reference position).
 std::vector<int> gmsh_to_vtk_triangle(int p);
+
+/// 2 by (p+1)^2 integer coordinates (i, j) = p (r, s) of VTK's Lagrange
+/// quadrilateral nodes of order p >= 1 (VTK_LAGRANGE_QUADRILATERAL = 70, VTK
+/// 9.1's vtkHigherOrderQuadrilateral::PointIndexFromIJK), VTK order: the
+/// corners (0,0), (p,0), (p,p), (0,p); the edge nodes of (0,0)-(p,0),
+/// (p,0)-(p,p), (0,p)-(p,p) and (0,0)-(0,p), each with i or j increasing (so
+/// edges 2 and 3 run against Gmsh's, which go round the element); then the
+/// interior nodes row by row, i fastest. Throws homesh::Error if p < 1.
+Eigen::Matrix2Xi vtk_quad_node_indices(int p);
+
+/// (p+1)^2 Gmsh node numbers of a quadrilateral of order p >= 1 in VTK order:
+/// VTK node k is Gmsh node map[k] (element/quad_reference_nodes.h).
+std::vector<int> gmsh_to_vtk_quad(int p);
 
 /// p+1 Gmsh node numbers of a line of order p >= 1 in order along it, from
 /// its first end to its second (the points of a VTK_POLY_LINE).

@@ -14,7 +14,8 @@
 namespace homesh {
 namespace {
 
-constexpr std::uint8_t kVtkLine = 3, kVtkPolyLine = 4, kVtkTriangle = 5, kVtkLagrangeTriangle = 69;
+constexpr std::uint8_t kVtkLine = 3, kVtkPolyLine = 4, kVtkTriangle = 5, kVtkQuad = 9,
+                       kVtkLagrangeTriangle = 69, kVtkLagrangeQuadrilateral = 70;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Appends `value`'s bytes to `bytes`, least significant first.
@@ -84,25 +85,27 @@ std::string data_array(const std::string& type, const std::string& name, int com
          base64(block) + "</DataArray>\n";
 }
 
-// The field's values over every triangle: a field of a few elements
+// The field's values over every 2D element: a field of a few elements
 // (Field::elements) gets NaN on the others.
-Eigen::MatrixXd all_triangles(const Field& f, const Mesh& m) {
-  const Eigen::Index rows = f.kind == Field::Kind::Element ? 1 : triangle_node_count(m.order);
-  const Eigen::Index cols =
-      f.elements.empty() ? m.num_triangles() : static_cast<Eigen::Index>(f.elements.size());
+Eigen::MatrixXd all_elements(const Field& f, const Mesh& m) {
+  const int n = m.num_elements_2d();
+  const Eigen::Index rows = f.kind == Field::Kind::Element ? 1
+                            : m.num_quads() > 0            ? quad_node_count(m.order)
+                                                           : triangle_node_count(m.order);
+  const Eigen::Index cols = f.elements.empty() ? n : static_cast<Eigen::Index>(f.elements.size());
   if (f.values.rows() != rows || f.values.cols() != cols)
     throw Error("vtu: field '" + f.name + "' is " + std::to_string(f.values.rows()) + " by " +
                 std::to_string(f.values.cols()) + ", but the mesh has " +
-                std::to_string(f.elements.empty() ? m.num_triangles() : f.elements.size()) +
-                (f.elements.empty() ? " triangles" : " listed triangles") + " of " +
+                std::to_string(f.elements.empty() ? n : f.elements.size()) +
+                (f.elements.empty() ? " elements" : " listed elements") + " of " +
                 std::to_string(rows) + (rows == 1 ? " value" : " nodes") + " each");
   if (f.elements.empty()) return f.values;
-  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(rows, m.num_triangles(), kNaN);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(rows, n, kNaN);
   for (std::size_t k = 0; k < f.elements.size(); ++k) {
     const int e = f.elements[k];
-    if (e < 0 || e >= m.num_triangles())
-      throw Error("vtu: field '" + f.name + "' lists triangle " + std::to_string(e) + " of " +
-                  std::to_string(m.num_triangles()));
+    if (e < 0 || e >= n)
+      throw Error("vtu: field '" + f.name + "' lists element " + std::to_string(e) + " of " +
+                  std::to_string(n));
     out.col(e) = f.values.col(static_cast<Eigen::Index>(k));
   }
   return out;
@@ -129,20 +132,22 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
   std::vector<const Field*> written;
   std::vector<Eigen::MatrixXd> values_of;
   for (const Field& f : fields)
-    if (f.values.cols() > 0 || mesh.num_triangles() == 0) {
+    if (f.values.cols() > 0 || mesh.num_elements_2d() == 0) {
       written.push_back(&f);
-      values_of.push_back(all_triangles(f, mesh));
+      values_of.push_back(all_elements(f, mesh));
     }
   if (!tags.triangles.empty() &&
-      tags.triangles.size() != static_cast<std::size_t>(mesh.num_triangles()))
-    throw Error("vtu: " + std::to_string(tags.triangles.size()) + " triangle tags for " +
-                std::to_string(mesh.num_triangles()) + " triangles");
+      tags.triangles.size() != static_cast<std::size_t>(mesh.num_elements_2d()))
+    throw Error("vtu: " + std::to_string(tags.triangles.size()) + " element tags for " +
+                std::to_string(mesh.num_elements_2d()) + " elements");
   if (!tags.lines.empty() && tags.lines.size() != static_cast<std::size_t>(mesh.num_lines()))
     throw Error("vtu: " + std::to_string(tags.lines.size()) + " line tags for " +
                 std::to_string(mesh.num_lines()) + " lines");
   const int p = mesh.order;
-  const int triangles = mesh.num_triangles(), lines = mesh.num_lines();
+  const int triangles = mesh.num_triangles(), quads = mesh.num_quads(), lines = mesh.num_lines();
+  const int elements = triangles + quads;
   const std::vector<int> tri_map = gmsh_to_vtk_triangle(p), line_map = line_nodes_along(p);
+  const std::vector<int> quad_map = gmsh_to_vtk_quad(p);
 
   std::string points, connectivity, offsets, types;
   for (int i = 0; i < mesh.num_nodes(); ++i) {
@@ -155,6 +160,11 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
     for (int g : tri_map) put<std::int64_t>(connectivity, mesh.tri(g, e));
     put(offsets, end += static_cast<std::int64_t>(tri_map.size()));
     put(types, p == 1 ? kVtkTriangle : kVtkLagrangeTriangle);
+  }
+  for (int q = 0; q < quads; ++q) {
+    for (int g : quad_map) put<std::int64_t>(connectivity, mesh.quad(g, q));
+    put(offsets, end += static_cast<std::int64_t>(quad_map.size()));
+    put(types, p == 1 ? kVtkQuad : kVtkLagrangeQuadrilateral);
   }
   for (int l = 0; l < lines; ++l) {
     for (int g : line_map) put<std::int64_t>(connectivity, mesh.line(g, l));
@@ -169,12 +179,13 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
     return it == groups.end() ? 0 : it->second;
   };
   const auto first_line_tag = 1 + mesh.point_node.size();
-  for (int e = 0; e < triangles; ++e) {
+  for (int e = 0; e < elements; ++e) {
     const auto k = static_cast<std::size_t>(e);
+    const int entity = e < triangles ? mesh.tri_entity[k] : mesh.quad_entity[k - triangles];
     put(element, static_cast<std::int64_t>(tags.triangles.empty() ? mesh.triangle_tag(e)
                                                                   : tags.triangles[k]));
-    put<std::int32_t>(geometrical, mesh.tri_entity[k]);
-    put<std::int32_t>(physical, group(surface_group, mesh.tri_entity[k]));
+    put<std::int32_t>(geometrical, entity);
+    put<std::int32_t>(physical, group(surface_group, entity));
   }
   for (int l = 0; l < lines; ++l) {
     const auto k = static_cast<std::size_t>(l);
@@ -193,18 +204,27 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
     const Eigen::MatrixXd& v = values_of[i];
     std::string values;
     const auto components = static_cast<int>(v.rows());
-    const std::vector<int> order = f.kind == Field::Kind::Element ? std::vector<int>{0} : tri_map;
-    for (int e = 0; e < triangles; ++e)
+    const bool element_field = f.kind == Field::Kind::Element;
+    const std::vector<int> tri_order = element_field ? std::vector<int>{0} : tri_map;
+    const std::vector<int> quad_order = element_field ? std::vector<int>{0} : quad_map;
+    for (int e = 0; e < elements; ++e) {
+      const std::vector<int>& order = e < triangles ? tri_order : quad_order;
       for (int k : order) put(values, v(k, e));
+      for (auto k = order.size(); k < static_cast<std::size_t>(components); ++k) put(values, kNaN);
+    }
     for (int l = 0; l < lines * components; ++l) put(values, kNaN);
     cell_data += data_array("Float64", f.name, components, values);
-    if (f.kind == Field::Kind::ElementNode) {
+    if (!element_field) {
       std::vector<double> at_point(static_cast<std::size_t>(mesh.num_nodes()), kNaN);
-      for (int e = 0; e < triangles; ++e)
-        for (int k = 0; k < components; ++k) {
-          double& x = at_point[static_cast<std::size_t>(mesh.tri(k, e))];
+      for (int e = 0; e < elements; ++e) {
+        const bool quad = e >= triangles;
+        const int nodes = static_cast<int>(quad ? quad_map.size() : tri_map.size());
+        for (int k = 0; k < nodes; ++k) {
+          const int node = quad ? mesh.quad(k, e - triangles) : mesh.tri(k, e);
+          double& x = at_point[static_cast<std::size_t>(node)];
           x = std::fmin(x, v(k, e));
         }
+      }
       std::string bytes;
       for (double x : at_point) put(bytes, x);
       point_data += data_array("Float64", point_field_name(f.name), 1, bytes);
@@ -215,7 +235,7 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
   out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" ";
   out += "header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
   out += "    <Piece NumberOfPoints=\"" + std::to_string(mesh.num_nodes()) + "\" NumberOfCells=\"" +
-         std::to_string(triangles + lines) + "\">\n";
+         std::to_string(elements + lines) + "\">\n";
   out += "      <Points>\n" + data_array("Float64", "Points", 3, points) + "      </Points>\n";
   out += "      <Cells>\n" + data_array("Int64", "connectivity", 1, connectivity) +
          data_array("Int64", "offsets", 1, offsets) + data_array("UInt8", "types", 1, types) +

@@ -1,18 +1,20 @@
 #pragma once
 // `.vtu` output: the mesh and its fields as a VTK XML UnstructuredGrid, for
 // ParaView and every VTK-based tool. Curved elements stay curved: triangles
-// of order p >= 2 are VTK_LAGRANGE_TRIANGLE (69) cells, nodes in VTK's order
+// of order p >= 2 are VTK_LAGRANGE_TRIANGLE (69) cells, quadrilaterals
+// VTK_LAGRANGE_QUADRILATERAL (70) cells, nodes in VTK's order
 // (io/vtk_node_order.h), which ParaView draws curved with its "Nonlinear
 // Subdivision Level" (2 or more). Boundary lines are VTK_POLY_LINE (4) cells
 // through their nodes in order, since VTK 9.1 and ParaView 5.11 crash on
-// nonlinear 1D cells at those levels. Order 1 writes VTK_TRIANGLE (5) and
-// VTK_LINE (3).
+// nonlinear 1D cells at those levels. Order 1 writes VTK_TRIANGLE (5),
+// VTK_QUAD (9) and VTK_LINE (3).
 //
 // Layout (VTK XML 1.0, appended nowhere: every array inline, base64 of
 // little-endian bytes after a UInt64 byte count, so values round-trip exactly
 // and NaN is representable):
 // - Points: the mesh's nodes, in homesh's node order (z = 0).
-// - Cells: the triangles (cell k = triangle k), then the boundary lines.
+// - Cells: the triangles (cell k = triangle k), the quadrilaterals, then the
+//   boundary lines (cell k = 2D element k of core/mesh.h, then the lines).
 //   Model points (Gmsh's point elements) are not written.
 // - CellData:
 //   - "gmsh:element": the cell's Gmsh element tag, as in the .msh of the same
@@ -25,13 +27,14 @@
 //     minJ/maxJ", "homesh: Q4 Equal volume, element minimum", ...), NaN on
 //     lines;
 //   - every ElementNode field F under its name ("homesh: Q4 Equal volume, at
-//     nodes"): one component per node of the triangle, in VTK's node order:
-//     the exact, per-element values;
+//     nodes"): one component per node of the element, in VTK's node order:
+//     the exact, per-element values (on a mesh with quadrilaterals, (p+1)^2
+//     components, a triangle's last ones NaN);
 //   - a field of a few elements (Field::elements) is NaN on the others; a
 //     field of no element is left out (Gmsh's views, too).
 // - PointData: every ElementNode field F as point_field_name(F): at each
-//   point, the smallest value over the triangles sharing it (NaN at a point
-//   of no triangle). Such fields (the quality measures at the nodes) are per
+//   point, the smallest value over the elements sharing it (NaN at a point
+//   of no element). Such fields (the quality measures at the nodes) are per
 //   element and jump across element edges; VTK's point data is one value per
 //   point, so the point field shows the worst element at each node, drawn
 //   curved and continuous, while the cell field keeps every element's own.
@@ -48,16 +51,16 @@ inline std::string point_field_name(const std::string& field) {
   return field + ", smallest at the point";
 }
 
-/// The Gmsh element tags of a mesh's triangles and lines, for "gmsh:element"
-/// when the mesh was read from a model that numbers them its own way. Empty:
-/// the tags homesh writes the mesh with (Mesh::triangle_tag).
+/// The Gmsh element tags of a mesh's 2D elements and lines, for
+/// "gmsh:element" when the mesh was read from a model that numbers them its
+/// own way. Empty: the tags homesh writes the mesh with (Mesh::triangle_tag).
 struct ElementTags {
-  std::vector<std::size_t> triangles;  ///< #triangles, or empty
+  std::vector<std::size_t> triangles;  ///< #2D elements (triangles, quadrilaterals), or empty
   std::vector<std::size_t> lines;      ///< #lines, or empty
 };
 
-/// The `.vtu` text of `mesh` and `fields` (each 1 or (p+1)(p+2)/2 by
-/// #triangles, see core/field.h), with `provenance` (e.g. the command line)
+/// The `.vtu` text of `mesh` and `fields` (each 1 or nodes-per-element by
+/// #2D elements, see core/field.h), with `provenance` (e.g. the command line)
 /// in an XML comment after the declaration. Throws homesh::Error if a field's
 /// or the tags' size does not match the mesh.
 std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,

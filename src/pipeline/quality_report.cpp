@@ -8,14 +8,27 @@
 
 namespace homesh {
 
+namespace {
+
+// "triangle" or "quadrilateral": the kind of 2D element e (core/mesh.h numbering).
+const char* kind(const Mesh& m, int e) {
+  return e < m.num_triangles() ? "triangle" : "quadrilateral";
+}
+
+}  // namespace
+
 std::string validity_line(const Mesh& m, const MeshValidity& v, std::size_t worst_tag) {
+  const std::string elements =
+      m.num_quads() == 0
+          ? fmt::format("{} triangles", m.num_triangles())
+          : fmt::format("{} triangles and {} quadrilaterals", m.num_triangles(), m.num_quads());
   std::string line = fmt::format(
-      "validity: {} invalid of {} triangles (certified by Bezier bounds of det J, relative "
-      "tolerance {:g})",
-      v.invalid, m.num_triangles(), v.relative_tolerance);
+      "validity: {} invalid of {} (certified by Bezier bounds of det J, relative tolerance {:g})",
+      v.invalid, elements, v.relative_tolerance);
   if (v.worst_element >= 0) {
     const Eigen::Vector2d c = m.corner_centroid(v.worst_element);
-    line += fmt::format("; worst minJ/maxJ {:.4f} at triangle {} ({:.4g}, {:.4g})", v.worst,
+    line += fmt::format("; worst minJ/maxJ {:.4f} at {} {} ({:.4g}, {:.4g})", v.worst,
+                        kind(m, v.worst_element),
                         worst_tag ? worst_tag : m.triangle_tag(v.worst_element), c.x(), c.y());
   }
   if (v.unconverged > 0) line += fmt::format("; {} not refined to tolerance", v.unconverged);
@@ -41,8 +54,8 @@ std::string worst_elements(const Mesh& m, const Eigen::VectorXd& values, int cou
   std::string out;
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector2d c = m.corner_centroid(order[k]);
-    out += fmt::format("    triangle {:<8} at ({:.4g}, {:.4g})  {:.4f}\n", m.triangle_tag(order[k]),
-                       c.x(), c.y(), values(order[k]));
+    out += fmt::format("    {} {:<8} at ({:.4g}, {:.4g})  {:.4f}\n", kind(m, order[k]),
+                       m.triangle_tag(order[k]), c.x(), c.y(), values(order[k]));
   }
   return out;
 }

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/file_extension.h"
+#include "core/group_by_entity.h"
 #include "core/input_limits.h"
 #include "core/progress.h"
 #include "gmsh/exit_guard.h"
@@ -116,6 +117,7 @@ void load_input(const std::string& path, Context& ctx) {
     if (ctx.has_cad) check_model_extent(path);
     if (gmsh_adapter::model_has_mesh()) {
       ctx.mesh = gmsh_adapter::read_model(path);
+      group_by_entity(*ctx.mesh);  // as after every stage: elements tagged in file order
     } else if (ext == "msh") {
       throw Error(path + ": has no triangles (no 2D mesh)");
     } else if (!ctx.has_cad) {
@@ -142,14 +144,14 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
   if (!ctx.mesh && !meshes) {
     ctx.log.info("{} has no mesh: meshing it with the mesh stage's defaults", ctx.input);
     const Stage& m = stage("mesh");
-    m.run(ctx, m.parse({}));
+    run_stage(m, ctx, m.parse({}));
   }
   set_progress(progress_wanted(ctx.log.quiet));
   for (std::size_t k = 0; k < plan.size(); ++k) {
     const Progress stage_label("stage " + std::to_string(k + 1) + "/" +
                                    std::to_string(plan.size()) + " " + plan[k].first->name,
                                0);
-    plan[k].first->run(ctx, plan[k].second);
+    run_stage(*plan[k].first, ctx, plan[k].second);
     group_context_by_entity(ctx);
   }
 }
@@ -164,17 +166,20 @@ void write_output(const std::string& path, const std::string& provenance, Contex
     ctx.log.info("{}", validity_line(m, v));
     ctx.set_field({kValidityFieldName, Field::Kind::Element, v.ratio.transpose(), true, true});
   }
+  const std::string elements = m.num_quads() > 0 ? "elements" : "triangles";
   if (v.invalid > 0 && !ctx.keep_invalid)
-    throw Error(path + ": not written: " + std::to_string(v.invalid) +
-                " triangles are not certified valid (keep them with --keep-invalid)");
-  if (v.invalid > 0) ctx.log.warn("{}: writing {} invalid triangles as asked", path, v.invalid);
+    throw Error(path + ": not written: " + std::to_string(v.invalid) + " " + elements +
+                " are not certified valid (keep them with --keep-invalid)");
+  if (v.invalid > 0) ctx.log.warn("{}: writing {} invalid {} as asked", path, v.invalid, elements);
 
   std::string record = provenance;
   for (const std::string& note : ctx.notes) record += "\n" + note;
+  const std::string quads =
+      m.num_quads() > 0 ? fmt::format(", {} quadrilaterals", m.num_quads()) : "";
   if (format == OutputFormat::vtu) {
     write_vtu(path, m, ctx.fields, record);
-    ctx.log.info("wrote {} (order {}, {} triangles, {} fields)", path, m.order, m.num_triangles(),
-                 ctx.fields.size());
+    ctx.log.info("wrote {} (order {}, {} triangles{}, {} fields)", path, m.order, m.num_triangles(),
+                 quads, ctx.fields.size());
     return;
   }
 
@@ -184,8 +189,8 @@ void write_output(const std::string& path, const std::string& provenance, Contex
     views = gmsh_adapter::add_views(ctx.fields, tags);
   });
   gmsh_adapter::write_msh(path, views, record);
-  ctx.log.info("wrote {} (order {}, {} triangles, {} views)", path, m.order, m.num_triangles(),
-               views.size());
+  ctx.log.info("wrote {} (order {}, {} triangles{}, {} views)", path, m.order, m.num_triangles(),
+               quads, views.size());
 }
 
 }  // namespace homesh

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "pipeline/context.h"
 #include "pipeline/option_table.h"
 #include "pipeline/options.h"
@@ -28,7 +29,21 @@ struct Stage {
   std::function<void(Context&, const std::any& options)> run;
   /// The stage makes a new mesh from the CAD (so none is needed before it).
   bool creates_mesh = false;
+  /// The stage works on meshes holding quadrilaterals; run_stage refuses
+  /// such a mesh to every other stage, so none drops or mangles them silently.
+  bool handles_quads = false;
 };
+
+/// Runs stage s on ctx with options made by s.parse. Throws homesh::Error
+/// naming the stage and the element type, before the stage does anything, if
+/// ctx's mesh holds quadrilaterals and s does not handle them.
+inline void run_stage(const Stage& s, Context& ctx, const std::any& options) {
+  if (!s.handles_quads && ctx.mesh && ctx.mesh->num_quads() > 0)
+    throw Error("stage '" + s.name + "' does not handle quadrilaterals yet (mesh has " +
+                std::to_string(ctx.mesh->num_quads()) + " '" + quad_type_name(ctx.mesh->order) +
+                "')");
+  s.run(ctx, options);
+}
 
 /// The options struct of a stage without options.
 struct NoOptions {};
@@ -37,7 +52,8 @@ struct NoOptions {};
 /// passed to `run`.
 template <class T>
 Stage make_stage(std::string name, std::string summary, const OptionTable<T>& table,
-                 void (*run)(Context&, const T&), bool creates_mesh = false) {
+                 void (*run)(Context&, const T&), bool creates_mesh = false,
+                 bool handles_quads = false) {
   Stage s;
   s.name = name;
   s.summary = std::move(summary);
@@ -49,6 +65,7 @@ Stage make_stage(std::string name, std::string summary, const OptionTable<T>& ta
     run(ctx, std::any_cast<const T&>(options));
   };
   s.creates_mesh = creates_mesh;
+  s.handles_quads = handles_quads;
   return s;
 }
 

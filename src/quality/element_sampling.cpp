@@ -4,11 +4,16 @@
 
 #include "core/error.h"
 #include "element/lagrange_basis.h"
+#include "element/quad_lagrange_basis.h"
 
 namespace homesh {
 
-ElementSampling::ElementSampling(int p, const Eigen::Matrix2Xd& uv) : p_(p), points_(uv) {
-  LagrangeBasis(p).tabulate_gradients(uv, dNdu_, dNdv_);
+ElementSampling::ElementSampling(int p, const Eigen::Matrix2Xd& uv, ElementShape shape)
+    : p_(p), shape_(shape), points_(uv) {
+  if (shape == ElementShape::quadrilateral)
+    QuadLagrangeBasis(p).tabulate_gradients(uv, dNdu_, dNdv_);
+  else
+    LagrangeBasis(p).tabulate_gradients(uv, dNdu_, dNdv_);
 }
 
 ElementSampling::ElementSampling(int p, const QuadratureRule& rule)

@@ -1,6 +1,7 @@
 #pragma once
-// The basis gradients of an order-p triangle tabulated once at fixed points of
-// the reference triangle (0,0), (1,0), (0,1), so that the Jacobians of many
+// The basis gradients of an order-p triangle (or quadrilateral) tabulated once
+// at fixed points of the reference triangle (0,0), (1,0), (0,1) (or of the
+// reference square [0, 1]^2, element/quad_lagrange_basis.h), so that the Jacobians of many
 // elements (or of one element whose nodes an optimiser moves) cost one small
 // product per point. Sampling the measures at ~200 points shows them over an
 // element (thesis Section 3.6); the points of a quadrature rule, with its
@@ -11,15 +12,19 @@
 
 namespace homesh {
 
+/// The reference element of a sampling.
+enum class ElementShape { triangle, quadrilateral };
+
 class ElementSampling {
  public:
   /// At the columns of `uv` (2 by m reference points), without weights; p >= 1.
-  ElementSampling(int p, const Eigen::Matrix2Xd& uv);
+  ElementSampling(int p, const Eigen::Matrix2Xd& uv, ElementShape shape = ElementShape::triangle);
   /// At the points of `rule`, keeping its weights (they sum to 1/2).
   ElementSampling(int p, const QuadratureRule& rule);
 
   int order() const { return p_; }
-  /// Number of element nodes, (p+1)(p+2)/2.
+  ElementShape shape() const { return shape_; }
+  /// Number of element nodes, (p+1)(p+2)/2 (a quadrilateral's (p+1)^2).
   int node_count() const { return static_cast<int>(dNdu_.rows()); }
   /// Number of points m.
   int size() const { return static_cast<int>(points_.cols()); }
@@ -42,6 +47,7 @@ class ElementSampling {
 
  private:
   int p_;
+  ElementShape shape_;
   Eigen::Matrix2Xd points_;
   Eigen::VectorXd weights_;
   Eigen::MatrixXd dNdu_, dNdv_;  // node_count() by m

@@ -1,19 +1,42 @@
 #include "quality/jacobian_bounds.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
 #include "quality/bezier_jacobian.h"
+#include "quality/bezier_quad.h"
 #include "quality/bezier_subdivision.h"
 #include "quality/bezier_triangle.h"
+#include "quality/quad_bezier_jacobian.h"
 
 namespace homesh {
 namespace {
 
-// A sub-triangle: its coefficients live at coeffs[offset, offset + n).
+// What the refinement needs of the domain's shape (triangle or square): the
+// coefficients per domain, which of them are corner values (exact values of
+// the polynomial), and the four-way split.
+struct Shape {
+  int n;
+  std::array<int, 4> corners;
+  int num_corners;
+  void (*split)(int d, const Eigen::Ref<const Eigen::VectorXd>& c, Eigen::Ref<Eigen::MatrixXd> sub);
+};
+
+Shape triangle(int d) {
+  const int n = bezier_size(d);
+  return {n, {0, d, n - 1, 0}, 3, bezier_subdivide};
+}
+
+Shape square(int d) {
+  const int n = quad_bezier_size(d, d);
+  return {n, {0, d, n - 1, n - 1 - d}, 4, quad_bezier_subdivide};
+}
+
+// A sub-domain: its coefficients live at coeffs[offset, offset + n).
 struct Domain {
   int offset;
   double min_b, max_b;  // bounds: the extreme coefficients
@@ -21,10 +44,10 @@ struct Domain {
 
 class Refinement {
  public:
-  // `c` (bezier_size(d) coefficients) must outlive the object; it is copied
-  // only if the whole triangle needs splitting.
-  Refinement(int d, const double* c, const BoundsOptions& opt)
-      : d_(d), n_(bezier_size(d)), opt_(opt), root_(c) {
+  // `c` (shape.n coefficients) must outlive the object; it is copied only if
+  // the whole domain needs splitting.
+  Refinement(int d, const Shape& shape, const double* c, const BoundsOptions& opt)
+      : d_(d), n_(shape.n), shape_(shape), opt_(opt), root_(c) {
     min_l_ = max_l_ = c[0];
     root_domain_ = bounds_of(c, 0);
   }
@@ -85,9 +108,9 @@ class Refinement {
       lo = std::min(lo, c[i]);
       hi = std::max(hi, c[i]);
     }
-    for (const int corner : {0, d_, n_ - 1}) {
-      min_l_ = std::min(min_l_, c[corner]);
-      max_l_ = std::max(max_l_, c[corner]);
+    for (int k = 0; k < shape_.num_corners; ++k) {
+      min_l_ = std::min(min_l_, c[shape_.corners[k]]);
+      max_l_ = std::max(max_l_, c[shape_.corners[k]]);
     }
     return {offset, lo, hi};
   }
@@ -102,8 +125,8 @@ class Refinement {
       live_.pop_back();
       const int first = static_cast<int>(coeffs_.size());
       coeffs_.resize(coeffs_.size() + 4 * static_cast<std::size_t>(n_));
-      bezier_subdivide(d_, Eigen::Map<const Eigen::VectorXd>(coeffs_.data() + parent, n_),
-                       Eigen::Map<Eigen::MatrixXd>(coeffs_.data() + first, n_, 4));
+      shape_.split(d_, Eigen::Map<const Eigen::VectorXd>(coeffs_.data() + parent, n_),
+                   Eigen::Map<Eigen::MatrixXd>(coeffs_.data() + first, n_, 4));
       for (int s = 0; s < 4; ++s) {
         const int offset = first + s * n_;
         live_.push_back(bounds_of(coeffs_.data() + offset, offset));
@@ -114,28 +137,44 @@ class Refinement {
   }
 
   int d_, n_;
+  Shape shape_;
   BoundsOptions opt_;
-  const double* root_;  // the coefficients of the whole triangle
+  const double* root_;  // the coefficients of the whole domain
   Domain root_domain_;
   std::vector<double> coeffs_;  // the coefficients of every domain made
-  std::vector<Domain> live_;    // the current partition of the triangle
+  std::vector<Domain> live_;    // the current partition of the domain
   double min_l_, max_l_;        // exact extreme values found so far
   int subdivisions_ = 0;
 };
+
+// Bounds over the domain of `shape`, the arguments checked first.
+JacobianBounds bounds(const char* who, int d, const Shape& shape,
+                      const Eigen::Ref<const Eigen::VectorXd>& c, const BoundsOptions& opt) {
+  if (d < 0 || c.size() != shape.n) {
+    throw Error(std::string(who) + ": degree " + std::to_string(d) + " needs " +
+                std::to_string(shape.n) + " coefficients, got " + std::to_string(c.size()));
+  }
+  if (!c.allFinite()) throw Error(std::string(who) + ": non-finite coefficients (nodes)");
+  if (!(opt.relative_tolerance >= 0) || opt.max_subdivisions < 0) {
+    throw Error(std::string(who) + ": relative_tolerance and max_subdivisions must be >= 0");
+  }
+  return Refinement(d, shape, c.data(), opt).run();
+}
 
 }  // namespace
 
 JacobianBounds bezier_bounds(int d, const Eigen::Ref<const Eigen::VectorXd>& c,
                              const BoundsOptions& opt) {
-  if (d < 0 || c.size() != bezier_size(d)) {
-    throw Error("bezier_bounds: degree " + std::to_string(d) + " needs " +
-                std::to_string(bezier_size(d)) + " coefficients, got " + std::to_string(c.size()));
-  }
-  if (!c.allFinite()) throw Error("bezier_bounds: non-finite coefficients (nodes)");
-  if (!(opt.relative_tolerance >= 0) || opt.max_subdivisions < 0) {
-    throw Error("bezier_bounds: relative_tolerance and max_subdivisions must be >= 0");
-  }
-  return Refinement(d, c.data(), opt).run();
+  return bounds("bezier_bounds", d, triangle(std::max(d, 0)), c, opt);
+}
+
+JacobianBounds quad_bezier_bounds(int d, const Eigen::Ref<const Eigen::VectorXd>& c,
+                                  const BoundsOptions& opt) {
+  return bounds("quad_bezier_bounds", d, square(std::max(d, 0)), c, opt);
+}
+
+JacobianBounds quad_jacobian_bounds(const Eigen::Matrix2Xd& X, int p, const BoundsOptions& opt) {
+  return quad_bezier_bounds(2 * p - 1, quad_jacobian_determinant_bezier(X, p), opt);
 }
 
 JacobianBounds jacobian_bounds(const Eigen::Matrix2Xd& X, int p, const BoundsOptions& opt) {

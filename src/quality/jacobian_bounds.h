@@ -1,14 +1,15 @@
 #pragma once
-// Certified bounds of the Jacobian determinant of a high-order triangle by
-// adaptive Bezier subdivision (Johnen, Remacle, Geuzaine, "Geometrical validity
-// of curvilinear finite elements", JCP 233, 2013; Gmsh's
+// Certified bounds of the Jacobian determinant of a high-order triangle or
+// quadrilateral by adaptive Bezier subdivision (Johnen, Remacle, Geuzaine,
+// "Geometrical validity of curvilinear finite elements", JCP 233, 2013; Gmsh's
 // jacobianBasedQuality::minMaxJacobianDeterminant and AnalyseMeshQuality plugin).
 //
-// det J is written in the Bernstein basis (bezier_jacobian.h). On a (sub-)
-// triangle the minimum and maximum Bezier coefficients bound det J from below
-// and above, and the three corner coefficients are exact values of det J. The
-// domain with the lowest lower bound is split in four (bezier_subdivision.h)
-// until it meets
+// det J is written in the Bernstein basis (bezier_jacobian.h; for a
+// quadrilateral the tensor-product basis, quad_bezier_jacobian.h). On a (sub-)
+// triangle or square the minimum and maximum Bezier coefficients bound det J
+// from below and above, and the corner coefficients are exact values of det J.
+// The domain with the lowest lower bound is split in four
+// (bezier_subdivision.h, bezier_quad.h) until it meets
 //   (a) the sign is decided: every coefficient of the domain > 0 (so det J > 0
 //       there), or some exact value found is <= 0, and
 //   (b) the gap between the bound and the best exact value is at most
@@ -55,6 +56,19 @@ struct JacobianBounds {
 /// (bezier_size(d), storage of bezier_triangle.h) over the reference triangle.
 JacobianBounds bezier_bounds(int d, const Eigen::Ref<const Eigen::VectorXd>& c,
                              const BoundsOptions& opt = {});
+
+/// Bounds of the polynomial of degrees (d, d) with tensor-product Bernstein
+/// coefficients c ((d+1)^2, storage of bezier_quad.h) over the square [0, 1]^2:
+/// the same refinement, the four corner coefficients as exact values and the
+/// square split in four (quad_bezier_subdivide), as Gmsh does for TYPE_QUA.
+JacobianBounds quad_bezier_bounds(int d, const Eigen::Ref<const Eigen::VectorXd>& c,
+                                  const BoundsOptions& opt = {});
+
+/// Bounds of det J over [0, 1]^2 (= area for a parallelogram) of the order-p
+/// quadrilateral with nodes X (2 by (p+1)^2, Gmsh order;
+/// quad_bezier_jacobian.h).
+JacobianBounds quad_jacobian_bounds(const Eigen::Matrix2Xd& X, int p,
+                                    const BoundsOptions& opt = {});
 
 /// Bounds of det J (= 2 * area for a straight-sided triangle) of the order-p
 /// triangle with nodes X (2 by (p+1)(p+2)/2, Gmsh order).

@@ -4,8 +4,10 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <limits>
 #include <optional>
 
+#include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
 #include "quality/bezier_triangle.h"
 #include "quality/ideal_jacobian.h"
@@ -13,12 +15,14 @@
 namespace homesh {
 namespace {
 
-// The sample points of an order-p element: the order-`lattice` reference
-// lattice, plus the element nodes unless the lattice already holds them
-// (lattice a multiple of p); node_point[i] is node i's point.
+// The sample points of an order-p triangle or quadrilateral: the
+// order-`lattice` reference lattice, plus the element nodes unless the lattice
+// already holds them (lattice a multiple of p); node_point[i] is node i's point.
 class LatticeSampling {
  public:
-  LatticeSampling(int p, int lattice) : sampling_(p, points(p, lattice, node_point_)) {
+  LatticeSampling(int p, int lattice, ElementShape shape)
+      : sampling_(p, points(p, lattice, shape, node_point_), shape) {
+    if (shape == ElementShape::quadrilateral) return;  // J from the Lagrange basis
     const Eigen::Matrix2Xd& uv = sampling_.points();
     bernstein_.resize(bezier_size(p - 1), uv.cols());
     for (Eigen::Index k = 0; k < uv.cols(); ++k)
@@ -34,7 +38,7 @@ class LatticeSampling {
     std::vector<double> det, value;
   };
 
-  // Measures qs of element e (nodes X, derivative control points U, V) into
+  // Measures qs of triangle e (nodes X, derivative control points U, V) into
   // column e of each result.
   void measure(const std::vector<const Measure*>& qs, Reference ref, const Eigen::Matrix2Xd& X,
                const JacobianControlPoints& U, const JacobianControlPoints& V, int e, Work& w,
@@ -52,6 +56,25 @@ class LatticeSampling {
       w.W[k].noalias() = J * to_ideal;  // W = J inv(J_ri), as ideal_jacobian
       w.det[k] = w.W[k].determinant();
     }
+    evaluate(qs, ref, X, e, w, out);
+  }
+
+  // Measures qs of quadrilateral e (nodes X) into column e of each result. The
+  // ideal element is the unit square, the reference square itself: W = J.
+  void measure(const std::vector<const Measure*>& qs, Reference ref, const Eigen::Matrix2Xd& X,
+               int e, Work& w, std::vector<MeshMeasure>& out) const {
+    for (int k = 0; k < size(); ++k) {
+      w.W[k] = sampling_.jacobian(X, k);
+      w.det[k] = w.W[k].determinant();
+    }
+    evaluate(qs, ref, X, e, w, out);
+  }
+
+ private:
+  // The measures from W and det W at every point (in w) into column e.
+  void evaluate(const std::vector<const Measure*>& qs, Reference ref, const Eigen::Matrix2Xd& X,
+                int e, Work& w, std::vector<MeshMeasure>& out) const {
+    const int points = size();
     std::vector<double>& value = w.value;
     for (std::size_t j = 0; j < qs.size(); ++j) {
       const Measure& m = *qs[j];
@@ -78,21 +101,23 @@ class LatticeSampling {
     }
   }
 
- private:
-  static Eigen::Matrix2Xd points(int p, int lattice, std::vector<int>& node_point) {
-    const int nodes = triangle_node_count(p);
-    Eigen::Matrix2Xd uv = reference_nodes(lattice);
+  static Eigen::Matrix2Xd points(int p, int lattice, ElementShape shape,
+                                 std::vector<int>& node_point) {
+    const bool quad = shape == ElementShape::quadrilateral;
+    const auto indices = quad ? quad_reference_node_indices : reference_node_indices;
+    const Eigen::Matrix2Xi node_index = indices(p);
+    const auto nodes = static_cast<int>(node_index.cols());
+    Eigen::Matrix2Xd uv = indices(lattice).cast<double>() * (1.0 / lattice);
     node_point.resize(static_cast<std::size_t>(nodes));
     if (lattice % p == 0) {
-      const Eigen::Matrix2Xi on_lattice = reference_node_indices(lattice);
-      const Eigen::Matrix2Xi node_index = reference_node_indices(p) * (lattice / p);
+      const Eigen::Matrix2Xi on_lattice = indices(lattice);
       for (int i = 0; i < nodes; ++i)
         for (int k = 0; k < on_lattice.cols(); ++k)
-          if (on_lattice.col(k) == node_index.col(i)) node_point[i] = k;
+          if (on_lattice.col(k) == node_index.col(i) * (lattice / p)) node_point[i] = k;
     } else {
       const Eigen::Index l = uv.cols();
       uv.conservativeResize(2, l + nodes);
-      uv.rightCols(nodes) = reference_nodes(p);
+      uv.rightCols(nodes) = node_index.cast<double>() * (1.0 / p);
       for (int i = 0; i < nodes; ++i) node_point[i] = static_cast<int>(l) + i;
     }
     return uv;
@@ -106,12 +131,16 @@ class LatticeSampling {
 // How many triangles ahead the loop requests nodes from memory.
 constexpr int kPrefetchAhead = 4;
 
-// The one loop over the triangles: bounds if `bounds`, measures if qs is not empty.
+// The one loop over the triangles and quadrilaterals: bounds if `bounds`,
+// measures if qs is not empty.
 MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int lattice, Reference ref,
                   const BoundsOptions* bounds, int threads) {
-  const int p = m.order, n = m.num_triangles(), q = bezier_size(p - 1);
-  std::optional<LatticeSampling> sampling;
-  if (!qs.empty()) sampling.emplace(p, lattice);
+  const int p = m.order, triangles = m.num_triangles(), n = m.num_elements_2d();
+  const int q = bezier_size(p - 1);
+  std::optional<LatticeSampling> sampling, quad_sampling;
+  if (!qs.empty() && triangles > 0) sampling.emplace(p, lattice, ElementShape::triangle);
+  if (!qs.empty() && m.num_quads() > 0)
+    quad_sampling.emplace(p, lattice, ElementShape::quadrilateral);
   MeshQuality r;
   MeshValidity& v = r.validity;
   std::vector<char> valid, converged;
@@ -125,18 +154,34 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
   r.measures.resize(qs.size());
   for (auto& out : r.measures) {
     out.element_min.resize(n);
-    out.node_values.resize(triangle_node_count(p), n);
+    // With quadrilaterals, a triangle's column has rows below its nodes: NaN.
+    out.node_values.setConstant(m.num_quads() > 0 ? quad_node_count(p) : triangle_node_count(p), n,
+                                std::numeric_limits<double>::quiet_NaN());
   }
 #pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
   {
-    Eigen::Matrix2Xd X(2, triangle_node_count(p));
+    Eigen::Matrix2Xd X(2, triangle_node_count(p)), Xq(2, quad_node_count(p));
     JacobianControlPoints U(2, q), V(2, q);
     LatticeSampling::Work work(sampling ? sampling->size() : 0);
+    LatticeSampling::Work quad_work(quad_sampling ? quad_sampling->size() : 0);
 #pragma omp for schedule(dynamic, 256)
     for (int e = 0; e < n; ++e) {
+      if (e >= triangles) {
+        const int k = e - triangles;
+        for (int i = 0; i < Xq.cols(); ++i) Xq.col(i) = m.x.col(m.quad(i, k));
+        if (bounds) {
+          const JacobianBounds b = quad_jacobian_bounds(Xq, p, *bounds);
+          v.ratio(e) = scaled_jacobian_ratio(b);
+          v.min_det(e) = b.min_lower;
+          valid[e] = b.valid_certified;
+          converged[e] = b.converged;
+        }
+        if (quad_sampling) quad_sampling->measure(qs, ref, Xq, e, quad_work, r.measures);
+        continue;
+      }
       // The nodes of a triangle a few ahead are requested now: on large
       // meshes waiting for them would otherwise take much of the time.
-      if (e + kPrefetchAhead < n)
+      if (e + kPrefetchAhead < triangles)
         for (int i = 0; i < X.cols(); ++i)
           __builtin_prefetch(m.x.col(m.tri(i, e + kPrefetchAhead)).data());
       for (int i = 0; i < X.cols(); ++i) X.col(i) = m.x.col(m.tri(i, e));

@@ -1,5 +1,6 @@
 #pragma once
-// Quality measures (quality/measure_registry.h) over every triangle of a mesh:
+// Quality measures (quality/measure_registry.h) over every triangle and
+// quadrilateral of a mesh (the 2D elements, numbered as in core/mesh.h):
 // values at each element's own nodes (for ElementNodeData views, drawn curved)
 // and the minimum over the nodes and a reference lattice (thesis Section 3.6
 // shows measures at ~200 points per element; the lattice order is a choice);
@@ -23,9 +24,11 @@
 namespace homesh {
 
 struct MeshMeasure {
-  /// #triangles minimum of the measure over each element's sample points.
+  /// #2D elements minimum of the measure over each element's sample points.
   Eigen::VectorXd element_min;
-  /// nodes-per-triangle by #triangles values at the element nodes, Gmsh order.
+  /// nodes-per-element by #2D elements values at the element nodes, Gmsh
+  /// order; with quadrilaterals (p+1)^2 rows, a triangle's values in the top
+  /// (p+1)(p+2)/2, NaN below (core/field.h).
   Eigen::MatrixXd node_values;
 };
 
@@ -33,9 +36,12 @@ struct MeshMeasure {
 /// so the lattice contains the element nodes).
 inline int default_lattice_order(int p) { return 2 * p; }
 
-/// Each measure of `qs` over every triangle of m, sampled at the nodes of the
-/// order-`lattice` reference lattice and at the element nodes, with
-/// normalisation `ref`. One result per measure, in the order of `qs`.
+/// Each measure of `qs` over every triangle and quadrilateral of m, sampled at
+/// the nodes of the order-`lattice` reference lattice (of the triangle, or of
+/// the square: (lattice+1)^2 points) and at the element nodes, with
+/// normalisation `ref`. One result per measure, in the order of `qs`. On a
+/// quadrilateral the ideal element is the unit square: W = J on the reference
+/// square [0, 1]^2 (README, "Quality measures").
 std::vector<MeshMeasure> mesh_measures(const Mesh& m, const std::vector<const Measure*>& qs,
                                        int lattice, Reference ref);
 
@@ -45,7 +51,7 @@ struct MeshQuality {
   std::vector<MeshMeasure> measures;  ///< as mesh_measures(m, qs, lattice, ref)
 };
 
-/// mesh_validity and mesh_measures in one pass over the triangles. With `qs`
+/// mesh_validity and mesh_measures in one pass over the 2D elements. With `qs`
 /// empty only the bounds are computed (lattice and ref are then unused).
 /// `threads` > 0 sets the number of OpenMP threads, 0 keeps OpenMP's current
 /// default (which gmsh::initialize sets to Gmsh's General.NumThreads, 1).

@@ -1,5 +1,6 @@
 #pragma once
-// Certified validity of every triangle of a mesh (quality/jacobian_bounds.h):
+// Certified validity of every triangle and quadrilateral of a mesh
+// (quality/jacobian_bounds.h):
 // an element counts as valid only if its Bezier bounds prove det J > 0 on the
 // whole element; elements whose sign the subdivision could not decide count as
 // invalid (never the reverse). It is mesh_quality (quality/mesh_quality.h) with
@@ -16,22 +17,24 @@ namespace homesh {
 constexpr const char* kValidityFieldName = "homesh: certified minJ/maxJ";
 
 struct MeshValidity {
-  /// #triangles Gmsh's minJ/maxJ of each triangle (scaled_jacobian_ratio).
+  /// #2D elements (triangles, then quadrilaterals: core/mesh.h) Gmsh's
+  /// minJ/maxJ of each element (scaled_jacobian_ratio).
   Eigen::VectorXd ratio;
-  /// #triangles certified lower bound of det J of each triangle.
+  /// #2D elements certified lower bound of det J of each element (on its
+  /// reference element: the triangle (0,0), (1,0), (0,1) or the square [0, 1]^2).
   Eigen::VectorXd min_det;
-  /// Triangles not certified valid.
+  /// Elements not certified valid.
   int invalid = 0;
-  /// Triangles whose bounds reached max_subdivisions before the tolerance.
+  /// Elements whose bounds reached max_subdivisions before the tolerance.
   int unconverged = 0;
-  /// Smallest ratio and the triangle holding it (-1 for an empty mesh).
+  /// Smallest ratio and the 2D element holding it (-1 for an empty mesh).
   double worst = 1.0;
   int worst_element = -1;
   /// The relative tolerance the bounds were refined to.
   double relative_tolerance = 0;
 };
 
-/// Bounds of det J of every triangle of m.
+/// Bounds of det J of every triangle and quadrilateral of m.
 MeshValidity mesh_validity(const Mesh& m, const BoundsOptions& opt = {});
 
 }  // namespace homesh

@@ -171,7 +171,8 @@ TEST_CASE("meshes homesh cannot take are refused with the reason", "[app]") {
   const TempDir dir;
   const std::string out = dir / "badmesh.msh";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {msh22(dir, "quad", {"3 1 2 3 4"}), "type 'Quadrilateral 4'"},
+      {msh22(dir, "quad", {"3 1 4 3 2"}), "quadrilateral 1 at (0.5, 0.5) is inverted"},
+      {msh22(dir, "quad8", {"16 1 2 3 4 1 2 3 4"}), "type 'Quadrilateral 8' (Gmsh type 16)"},
       {msh22(dir, "tet", {"2 1 2 3", "4 1 2 3 5"}), "has 3D elements"},
       {msh22(dir, "inverted", {"2 1 2 3", "2 1 4 3"}),
        "triangle 2 at (0.333333, 0.666667) is inverted"},
@@ -186,6 +187,33 @@ TEST_CASE("meshes homesh cannot take are refused with the reason", "[app]") {
     REQUIRE(r.output.find(message) != std::string::npos);
     REQUIRE_FALSE(exists(out));
   }
+}
+
+TEST_CASE("stages that do not handle quadrilaterals refuse them, naming stage and type",
+          "[app][quads]") {
+  const TempDir dir;
+  const std::string in = msh22(dir, "square", {"3 1 2 3 4"}), out = dir / "quads_out.msh";
+  // One stage through the CLI (tests/pipeline/run_stage_test.cpp checks every stage).
+  for (const std::string stage : {"curve:p=3"}) {
+    const auto r = run_homesh(in + " -m " + stage + " " + out);
+    INFO(r.output);
+    REQUIRE(r.exit_code != 0);
+    const std::string name = stage.substr(0, stage.find(':'));
+    REQUIRE_THAT(r.output, Catch::Contains("stage '" + name +
+                                           "' does not handle quadrilaterals yet (mesh has 1 "
+                                           "'Quadrilateral 4')"));
+    REQUIRE_FALSE(exists(out));
+  }
+  const auto info = run_homesh(in + " -m info " + out);
+  INFO(info.output);
+  REQUIRE(info.exit_code == 0);
+  REQUIRE_THAT(info.output, Catch::Contains("and 1 quadrilaterals ('Quadrilateral 4')") &&
+                                Catch::Contains("validity: 0 invalid of 0 triangles and 1 "
+                                                "quadrilaterals"));
+  const auto vtu = run_homesh(in + " -m info " + dir / "square.vtu");
+  INFO(vtu.output);
+  REQUIRE(vtu.exit_code == 0);
+  REQUIRE_THAT(vtu.output, Catch::Contains("(order 1, 0 triangles, 1 quadrilaterals, 1 fields)"));
 }
 
 TEST_CASE("the same input gives byte-identical output", "[app]") {

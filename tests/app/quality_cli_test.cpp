@@ -129,3 +129,57 @@ TEST_CASE("an invalid mesh is never written silently", "[app]") {
   REQUIRE(r.output.find("warning: " + out + ": writing") != std::string::npos);
   REQUIRE(std::ifstream(out).good());
 }
+
+TEST_CASE("quality on a mixed quadrilateral and triangle mesh: views over every element",
+          "[app][quads]") {
+  const TempDir dir;
+  const std::string in = dir / "mixed.msh", out = dir / "mixed_quality.msh";
+  int triangles = 0, quads = 0;
+  {
+    homesh::test::GmshSession session;
+    homesh::test::make_plate_with_quad_layer(3);
+    const homesh::Mesh m = homesh::gmsh_adapter::read_model("plate");
+    triangles = m.num_triangles();
+    quads = m.num_quads();
+    gmsh::write(in);
+  }
+  REQUIRE(quads > 20);
+  const auto r = run_homesh(in + " -m quality:measures=Q1,Q4,Q11:worst=3 --keep-invalid " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.output.find("of " + std::to_string(triangles) + " triangles and " +
+                        std::to_string(quads) + " quadrilaterals") != std::string::npos);
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  std::vector<std::size_t> tags2d;
+  REQUIRE(homesh::gmsh_adapter::read_model(out, &tags2d).num_quads() == quads);
+  const int quad_nodes = 16, triangle_nodes = 10;  // order 3
+  std::vector<int> views;
+  gmsh::view::getTags(views);
+  REQUIRE(views.size() >= 7);  // minJ/maxJ, 3 measures (element minimum, at nodes)[, poor]
+  for (int view : views) {
+    std::string name, type;
+    gmsh::option::getString("View[" + std::to_string(gmsh::view::getIndex(view)) + "].Name", name);
+    INFO(name);
+    std::vector<std::size_t> tags;
+    std::vector<std::vector<double>> values;
+    double time;
+    int components;
+    gmsh::view::getModelData(view, 0, type, tags, values, time, components);
+    std::map<std::size_t, const std::vector<double>*> by_tag;
+    for (std::size_t k = 0; k < tags.size(); ++k) by_tag[tags[k]] = &values[k];
+    if (name.find("certified minJ/maxJ <") != std::string::npos) continue;  // a few elements
+    std::size_t covered = 0;
+    for (std::size_t e = 0; e < tags2d.size(); ++e) {
+      const auto it = by_tag.find(tags2d[e]);
+      if (it == by_tag.end()) continue;
+      ++covered;
+      const std::vector<double>& v = *it->second;
+      const bool quad = e >= static_cast<std::size_t>(triangles);
+      if (type == "ElementNodeData")
+        REQUIRE(v.size() == static_cast<std::size_t>(quad ? quad_nodes : triangle_nodes));
+      for (double x : v) REQUIRE((x <= 1.0 && std::isfinite(x)));
+    }
+    REQUIRE(covered == tags2d.size());
+  }
+}

@@ -53,7 +53,7 @@ TEST_CASE("check_mesh accepts a good mesh and names each defect", "[core]") {
   fin.tri_entity.push_back(1);
   REQUIRE_THROWS_WITH(check_mesh(fin, "in.msh"),
                       Catch::Contains("the edge between nodes 1 and 3") &&
-                          Catch::Contains("three or more triangles (a non-manifold mesh)"));
+                          Catch::Contains("three or more elements (a non-manifold mesh)"));
 
   Mesh far = square();
   far.x *= 1e13;
@@ -72,4 +72,37 @@ TEST_CASE("check_mesh is scale-free: tiny and huge meshes pass", "[core]") {
     m.x *= s;
     REQUIRE_NOTHROW(check_mesh(m, "in.msh"));
   }
+}
+
+TEST_CASE("check_mesh checks quadrilaterals and edges shared with triangles", "[core]") {
+  // The unit square as one quadrilateral, a triangle on its top edge.
+  Mesh m;
+  m.x.resize(2, 5);
+  m.x << 0, 1, 1, 0, 0.5, 0, 0, 1, 1, 2;
+  m.node_class.resize(5);
+  m.quad.resize(4, 1);
+  m.quad << 0, 1, 2, 3;
+  m.quad_entity = {1};
+  m.tri.resize(3, 1);
+  m.tri << 3, 2, 4;
+  m.tri_entity = {1};
+  REQUIRE_NOTHROW(check_mesh(m, "in.msh"));
+
+  Mesh inverted = m;
+  inverted.quad.col(0) << 0, 3, 2, 1;
+  REQUIRE_THROWS_WITH(check_mesh(inverted, "in.msh"),
+                      "in.msh: quadrilateral 1 at (0.5, 0.5) is inverted (its corners run "
+                      "clockwise)");
+  Mesh repeated = m;
+  repeated.quad.col(0) << 0, 1, 2, 1;
+  REQUIRE_THROWS_WITH(check_mesh(repeated, "in.msh"), Catch::Contains("repeats a corner node"));
+  Mesh third = m;  // a second triangle on the edge 3-2 the quadrilateral and triangle share
+  third.x.conservativeResize(2, 6);
+  third.x.col(5) << 0.5, 3;
+  third.node_class.resize(6);
+  third.tri.conservativeResize(3, 2);
+  third.tri.col(1) << 3, 2, 5;
+  third.tri_entity.push_back(1);
+  REQUIRE_THROWS_WITH(check_mesh(third, "in.msh"),
+                      Catch::Contains("three or more elements (a non-manifold mesh)"));
 }

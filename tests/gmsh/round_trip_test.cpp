@@ -1,5 +1,6 @@
 #include <gmsh.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <limits>
@@ -8,6 +9,7 @@
 
 #include "../support/gmsh_session.h"
 #include "../support/temp_dir.h"
+#include "element/quad_reference_nodes.h"
 #include "gmsh/read_model.h"
 #include "gmsh/view_style.h"
 #include "gmsh/views.h"
@@ -25,6 +27,8 @@ void require_same(const Mesh& a, const Mesh& b, double tol = 0) {
   REQUIRE((a.x - b.x).cwiseAbs().maxCoeff() <= tol);
   REQUIRE(a.tri == b.tri);
   REQUIRE(a.tri_entity == b.tri_entity);
+  REQUIRE(a.quad == b.quad);
+  REQUIRE(a.quad_entity == b.quad_entity);
   REQUIRE(a.line == b.line);
   REQUIRE(a.line_entity == b.line_entity);
   REQUIRE(a.point_node == b.point_node);
@@ -157,4 +161,136 @@ TEST_CASE("write_model gives nodes on a CAD curve without a parameter Gmsh's", "
     for (std::size_t k = 0; k < tags.size(); ++k)
       CHECK(param[k] == Approx(nodes[k].second).margin(1e-9));
   }
+}
+
+namespace {
+
+// Two unit squares side by side: quadrilaterals on the left (surface 1),
+// triangles on the right (surface 2), order p.
+void make_quads_beside_triangles(int p) {
+  gmsh::model::add("two");
+  const int left = gmsh::model::occ::addRectangle(0, 0, 0, 1, 1);
+  const int right = gmsh::model::occ::addRectangle(1, 0, 0, 1, 1);
+  gmsh::vectorpair out;
+  std::vector<gmsh::vectorpair> map;
+  gmsh::model::occ::fragment({{2, left}}, {{2, right}}, out, map);
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.25);
+  gmsh::model::mesh::setRecombine(2, 1);
+  gmsh::model::mesh::generate(2);
+  if (p > 1) gmsh::model::mesh::setOrder(p);
+}
+
+// The current model (order p, with quadrilaterals) -> core -> model -> .msh
+// -> model keeps every element and its node order, a view of each element's
+// node indices comes back on the right elements, and the 2D element tags
+// increase in the order the file lists the elements (entity by entity): the
+// order meshio pairs element data with elements.
+void check_quad_round_trip(int p) {
+  const int quad_type = gmsh::model::mesh::getElementType("Quadrangle", p);
+  std::vector<std::size_t> quad_tags, quad_nodes;
+  gmsh::model::mesh::getElementsByType(quad_type, quad_tags, quad_nodes);
+  REQUIRE(quad_tags.size() > 10);
+
+  const Mesh m1 = gmsh_adapter::read_model("model");
+  REQUIRE(static_cast<std::size_t>(m1.num_quads()) == quad_tags.size());
+  REQUIRE(m1.num_triangles() > 10);
+  REQUIRE(static_cast<std::size_t>(m1.num_elements_2d()) == gmsh_count(2));
+  REQUIRE(m1.quad.rows() == (p + 1) * (p + 1));
+  // Gmsh's node order is the reference order: a quadrilateral with straight
+  // sides has its nodes at the bilinear map of its corners at quad_reference_nodes.
+  const Eigen::Matrix2Xd ref = quad_reference_nodes(p);
+  int straight = 0;
+  for (int e = 0; e < m1.num_quads(); ++e) {
+    const Eigen::Matrix2Xd X = m1.quad_nodes(e);
+    double gap = 0;
+    for (Eigen::Index k = 0; k < X.cols(); ++k) {
+      const double u = ref(0, k), v = ref(1, k);
+      const Eigen::Vector2d bilinear = (1 - u) * (1 - v) * X.col(0) + u * (1 - v) * X.col(1) +
+                                       u * v * X.col(2) + (1 - u) * v * X.col(3);
+      gap = std::max(gap, (X.col(k) - bilinear).norm());
+    }
+    straight += gap < 1e-12 ? 1 : 0;
+  }
+  CHECK(straight > m1.num_quads() / 3);
+
+  const auto tags = gmsh_adapter::write_model(m1);
+  REQUIRE(tags.element.size() == static_cast<std::size_t>(m1.num_elements_2d()));
+  require_same(m1, gmsh_adapter::read_model("model"));
+  // A view of each element's node indices over triangles and quadrilaterals.
+  Eigen::MatrixXd index = Eigen::MatrixXd::Constant(m1.quad.rows(), m1.num_elements_2d(), -1);
+  index.topLeftCorner(m1.tri.rows(), m1.num_triangles()) = m1.tri.cast<double>();
+  index.rightCols(m1.num_quads()) = m1.quad.cast<double>();
+  const auto views =
+      gmsh_adapter::add_views({{"node index", Field::Kind::ElementNode, index}}, tags);
+  const test::TempDir dir;
+  const std::string path = dir / "quads.msh";
+  gmsh_adapter::write_msh(path, views, "test provenance");
+
+  gmsh::clear();
+  gmsh::open(path);
+  std::vector<std::size_t> element_tags;
+  const Mesh m3 = gmsh_adapter::read_model(path, &element_tags);
+  require_same(m1, m3, 1e-15);
+  REQUIRE(element_tags == tags.element);
+  std::vector<std::size_t> file_order;
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  std::sort(surfaces.begin(), surfaces.end());
+  for (const auto& [dim, tag] : surfaces) {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> etags, enodes;
+    gmsh::model::mesh::getElements(types, etags, enodes, dim, tag);
+    for (const auto& t : etags) file_order.insert(file_order.end(), t.begin(), t.end());
+  }
+  REQUIRE(std::is_sorted(file_order.begin(), file_order.end()));
+  std::map<std::size_t, Eigen::Index> element_of;
+  for (std::size_t e = 0; e < tags.element.size(); ++e)
+    element_of[tags.element[e]] = static_cast<Eigen::Index>(e);
+  std::vector<int> view_tags;
+  gmsh::view::getTags(view_tags);
+  REQUIRE(view_tags.size() == 1);
+  std::string type;
+  std::vector<std::vector<double>> data;
+  double time;
+  int components;
+  gmsh::view::getModelData(view_tags[0], 0, type, element_tags, data, time, components);
+  REQUIRE(element_tags.size() == static_cast<std::size_t>(m1.num_elements_2d()));
+  for (std::size_t k = 0; k < element_tags.size(); ++k) {
+    const Eigen::Index e = element_of.at(element_tags[k]);
+    const bool quad = e >= m1.num_triangles();
+    REQUIRE(data[k].size() == static_cast<std::size_t>(quad ? m1.quad.rows() : m1.tri.rows()));
+    for (std::size_t i = 0; i < data[k].size(); ++i) REQUIRE(data[k][i] == index(i, e));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("quadrilaterals mixed with triangles survive model -> core -> .msh -> model, p = 1..4",
+          "[gmsh][quads]") {
+  for (int p = 1; p <= 4; ++p) {
+    CAPTURE(p);
+    {
+      INFO("a boundary layer of quadrilaterals in a triangle mesh");
+      test::GmshSession session;
+      test::make_plate_with_quad_layer(p);
+      check_quad_round_trip(p);
+    }
+    {
+      INFO("quadrilaterals on one surface, triangles on the next");
+      test::GmshSession session;
+      make_quads_beside_triangles(p);
+      check_quad_round_trip(p);
+    }
+  }
+}
+
+TEST_CASE("incomplete quadrilaterals are refused naming their type", "[gmsh][quads]") {
+  test::GmshSession session;
+  test::make_plate_with_quad_layer(1, 0.3, true);
+  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 1);
+  gmsh::model::mesh::setOrder(2);
+  REQUIRE_THROWS_WITH(gmsh_adapter::read_model("plate"),
+                      Catch::Contains("type 'Quadrilateral 8' (Gmsh type 16)") &&
+                          Catch::Contains("incomplete (serendipity)"));
 }

@@ -14,6 +14,7 @@
 #include "../support/node_rows.h"
 #include "core/error.h"
 #include "core/mesh.h"
+#include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
 
 using namespace homesh;
@@ -105,4 +106,27 @@ TEST_CASE("line_nodes_along runs from a line's first end to its second", "[io][v
 TEST_CASE("VTK node orders refuse an order below 1", "[io][vtk_node_order]") {
   CHECK_THROWS_AS(vtk_triangle_node_indices(0), Error);
   CHECK_THROWS_AS(line_nodes_along(0), Error);
+}
+
+TEST_CASE("vtk_quad_node_indices are VTK's own Lagrange quadrilateral nodes, p = 1..10",
+          "[io][vtk_node_order]") {
+  const auto rows = vtk_nodes();
+  for (int p = 1; p <= kMaxOrder; ++p) {
+    INFO("p = " << p);
+    const std::vector<double>& vtk = rows.at({"Quadrilateral", p});
+    const Eigen::Matrix2Xi ij = vtk_quad_node_indices(p);
+    REQUIRE(vtk.size() == static_cast<std::size_t>(ij.size()));
+    for (Eigen::Index k = 0; k < ij.cols(); ++k) {
+      INFO("node " << k);
+      CHECK(std::abs(ij(0, k) * (1.0 / p) - vtk[2 * k]) < 1e-15);
+      CHECK(std::abs(ij(1, k) * (1.0 / p) - vtk[2 * k + 1]) < 1e-15);
+    }
+    // The map puts Gmsh's node at each VTK position, each node once.
+    const std::vector<int> map = gmsh_to_vtk_quad(p);
+    const Eigen::Matrix2Xi gmsh = quad_reference_node_indices(p);
+    std::vector<int> sorted = map;
+    std::sort(sorted.begin(), sorted.end());
+    for (int k = 0; k < static_cast<int>(sorted.size()); ++k) REQUIRE(sorted[k] == k);
+    for (Eigen::Index k = 0; k < ij.cols(); ++k) CHECK(gmsh.col(map[k]) == ij.col(k));
+  }
 }

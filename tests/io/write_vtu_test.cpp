@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -149,7 +150,7 @@ TEST_CASE("vtu_text writes a field of a few elements with NaN on the others", "[
   const Field none{"none", Field::Kind::ElementNode, Eigen::MatrixXd(6, 0)};
   CHECK_THAT(vtu_text(square(2), {none}, ""), !Catch::Contains("Name=\"none\""));
   poor.elements = {2};
-  REQUIRE_THROWS_WITH(vtu_text(square(2), {poor}, ""), "vtu: field 'poor' lists triangle 2 of 2");
+  REQUIRE_THROWS_WITH(vtu_text(square(2), {poor}, ""), "vtu: field 'poor' lists element 2 of 2");
 }
 
 TEST_CASE("vtu_text writes order 1 as VTK's linear cells", "[io][write_vtu]") {
@@ -174,7 +175,7 @@ TEST_CASE("vtu_text keeps the provenance comment and the names well-formed XML",
 TEST_CASE("vtu_text refuses a field that does not fit the mesh", "[io][write_vtu]") {
   const Field wrong{"Q4", Field::Kind::ElementNode, Eigen::MatrixXd::Zero(3, 2)};
   CHECK_THROWS_WITH(vtu_text(square(2), {wrong}, ""),
-                    "vtu: field 'Q4' is 3 by 2, but the mesh has 2 triangles of 6 nodes each");
+                    "vtu: field 'Q4' is 3 by 2, but the mesh has 2 elements of 6 nodes each");
 }
 
 TEST_CASE("write_vtu writes the text atomically, an error naming the path", "[io][write_vtu]") {
@@ -194,4 +195,49 @@ TEST_CASE("write_vtu writes the text atomically, an error naming the path", "[io
   std::stringstream kept;
   kept << again.rdbuf();
   CHECK(kept.str() == text.str());
+}
+
+TEST_CASE("vtu_text writes quadrilaterals as Lagrange quadrilaterals beside the triangles",
+          "[io][write_vtu]") {
+  // A quadratic unit square (nodes 0..8, Gmsh order) and a quadratic triangle
+  // on its top edge (nodes 3, 2, 9; edge nodes 6, 10, 11), one line below.
+  Mesh m;
+  m.order = 2;
+  m.x.resize(2, 12);
+  m.x << 0, 1, 1, 0, 0.5, 1, 0.5, 0, 0.5, 0.5, 0.75, 0.25,  //
+      0, 0, 1, 1, 0, 0.5, 1, 0.5, 0.5, 2, 1.5, 1.5;
+  m.node_class.resize(12);
+  m.quad.resize(9, 1);
+  m.quad << 0, 1, 2, 3, 4, 5, 6, 7, 8;
+  m.quad_entity = {1};
+  m.tri.resize(6, 1);
+  m.tri << 3, 2, 9, 6, 10, 11;
+  m.tri_entity = {1};
+  m.line.resize(3, 1);
+  m.line << 0, 1, 4;
+  m.line_entity = {1};
+  Eigen::MatrixXd at_nodes =
+      Eigen::MatrixXd::Constant(9, 2, std::numeric_limits<double>::quiet_NaN());
+  at_nodes.col(0).head(6) << 1, 2, 3, 4, 5, 6;
+  at_nodes.col(1) << 10, 11, 12, 13, 14, 15, 16, 17, 18;
+  const std::string vtu =
+      vtu_text(m,
+               {{"minJ/maxJ", Field::Kind::Element, Eigen::RowVector2d(0.9, 0.8)},
+                {"Q4", Field::Kind::ElementNode, at_nodes}},
+               "");
+  CHECK(array<std::uint8_t>(vtu, "types") == std::vector<std::uint8_t>{69, 70, 4});
+  // VTK's quadrilateral: corners, edges 0-1, 1-2, then 3-2 and 0-3 (increasing), centre.
+  CHECK(array<std::int64_t>(vtu, "connectivity") ==
+        std::vector<std::int64_t>{3, 2, 9, 6, 10, 11, 0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 4, 1});
+  // Tags: the line, the triangle, then the quadrilateral (one surface).
+  CHECK(array<std::int64_t>(vtu, "gmsh:element") == std::vector<std::int64_t>{2, 3, 1});
+  CHECK(array<double>(vtu, "minJ/maxJ")[1] == 0.8);
+  const auto q4 = array<double>(vtu, "Q4");
+  REQUIRE(q4.size() == 27);  // 9 components per cell
+  CHECK(q4[0] == 1);
+  CHECK(std::isnan(q4[6]));  // a triangle's components beyond its 6 nodes
+  CHECK(q4[9] == 10);
+  CHECK(q4[17] == 18);
+  // At node 2, shared by both: the smaller of the triangle's 2 and the quad's 12.
+  CHECK(array<double>(vtu, point_field_name("Q4"))[2] == 2);
 }

@@ -247,3 +247,57 @@ def test_a_users_node_view_is_point_data_and_a_list_view_is_left_out(model, tmp_
     assert np.allclose(values, points[:, 0] + 2 * points[:, 1], rtol=0, atol=1e-15)
     assert grid.GetCellData().GetArray("a .pos view") is None
     assert grid.GetPointData().GetArray("a .pos view") is None
+
+
+@pytest.mark.parametrize("p", [1, 2, 3, 4])
+def test_quadrilaterals_read_by_vtk_interpolate_as_gmsh(model, tmp_path, p):
+    """A boundary layer of quadrilaterals in a triangle mesh (Gmsh's BoundaryLayer field,
+    Quads = 1), order p: VTK reads each quadrilateral as a Lagrange quadrilateral (70; VTK_QUAD
+    at p = 1) of (p+1)^2 nodes, and its map equals Gmsh's at reference points, as the
+    triangles' does; the certified minJ/maxJ is cell data of every 2D cell (NaN on lines)."""
+    gmsh.clear()
+    gmsh.model.occ.addRectangle(0, 0, 0, 1, 1, 1)
+    gmsh.model.occ.addDisk(0.5, 0.5, 0, 0.2, 0.2, 2)
+    gmsh.model.occ.cut([(2, 1)], [(2, 2)])
+    gmsh.model.occ.synchronize()
+    field = gmsh.model.mesh.field.add("BoundaryLayer")
+    gmsh.model.mesh.field.setNumbers(field, "CurvesList", [5])  # the hole
+    for name, value in [("Size", 0.01), ("Ratio", 1.3), ("Thickness", 0.05), ("Quads", 1)]:
+        gmsh.model.mesh.field.setNumber(field, name, value)
+    gmsh.model.mesh.field.setAsBoundaryLayer(field)
+    gmsh.option.setNumber("Mesh.MeshSizeMax", 0.2)
+    gmsh.model.mesh.generate(2)
+    if p > 1:
+        gmsh.model.mesh.setOrder(p)
+    homesh.quality(measures="Q4")
+    path = tmp_path / "quads.vtu"
+    homesh.write(str(path), keep_invalid=True)
+    grid = read_vtu(path)
+    tags = cell_array(grid, "gmsh:element")
+    quad_type = gmsh.model.mesh.getElementType("Quadrangle", p)
+    quads = set(gmsh.model.mesh.getElementsByType(quad_type)[0])
+    assert len(quads) > 10
+    seen = 0
+    rng = np.random.default_rng(p)
+    for c in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(c)
+        if cell.GetCellDimension() != 2:
+            continue
+        quad = int(tags[c]) in quads
+        seen += quad
+        if quad:
+            assert cell.GetCellType() == (vtk.VTK_QUAD if p == 1 else
+                                          vtk.VTK_LAGRANGE_QUADRILATERAL)
+            assert cell.GetNumberOfPoints() == (p + 1) ** 2
+        for u, v in rng.uniform(0, 1, (3, 2)):
+            if not quad and u + v > 1:
+                u, v = 1 - u, 1 - v
+            x, weights = [0.0, 0.0, 0.0], [0.0] * cell.GetNumberOfPoints()
+            cell.EvaluateLocation(vtk.mutable(0), [u, v, 0], x, weights)
+            local = [2 * u - 1, 2 * v - 1, 0] if quad else [u, v, 0]
+            _, _, expected = gmsh.model.mesh.getJacobian(int(tags[c]), local)
+            assert np.allclose(x[:2], expected[:2], rtol=0, atol=1e-12)
+    assert seen == len(quads)
+    ratio = cell_array(grid, "homesh: certified minJ/maxJ")
+    surface = [grid.GetCell(c).GetCellDimension() == 2 for c in range(grid.GetNumberOfCells())]
+    assert not np.isnan(ratio[surface]).any() and np.isnan(ratio[np.logical_not(surface)]).all()

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "../fem/fem_test_support.h"
+#include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
 #include "quality/mesh_validity.h"
 
@@ -75,4 +76,48 @@ TEST_CASE("mesh_quality is mesh_validity and mesh_measures in one pass", "[quali
   // The invalid triangle scores 0 in every measure that needs omega > 0.
   const int bad = alone.worst_element;
   for (std::size_t j = 1; j < qs.size(); ++j) CHECK(both.measures[j].element_min(bad) == 0.0);
+}
+
+TEST_CASE("measures on quadrilaterals: 1 at the unit square, analytic on a 2:1 rectangle",
+          "[quality][mesh_quality][quads]") {
+  for (int p = 1; p <= 3; ++p) {
+    INFO("p = " << p);
+    // The unit square, and a 2:1 rectangle beside it; one triangle below.
+    const Eigen::Matrix2Xd ref = quad_reference_nodes(p);
+    const int n = static_cast<int>(ref.cols());
+    Mesh m;
+    m.order = p;
+    m.x.resize(2, 2 * n + triangle_node_count(p));
+    m.x.leftCols(n) = ref;
+    m.x.middleCols(n, n) = Eigen::Vector2d(2.0, 1.0).asDiagonal() * ref;
+    m.x.middleCols(n, n).row(0).array() += 2.0;
+    m.x.rightCols(triangle_node_count(p)) = reference_nodes(p);
+    m.x.rightCols(triangle_node_count(p)).row(1).array() -= 1.0;
+    m.quad.resize(n, 2);
+    for (int k = 0; k < n; ++k) m.quad.col(0)(k) = k, m.quad.col(1)(k) = n + k;
+    m.quad_entity = {1, 1};
+    m.tri.resize(triangle_node_count(p), 1);
+    for (int k = 0; k < triangle_node_count(p); ++k) m.tri(k, 0) = 2 * n + k;
+    m.tri_entity = {1};
+    std::vector<const Measure*> qs;
+    for (const Measure& q : measures()) qs.push_back(&q);
+    const MeshQuality r = mesh_quality(m, qs, default_lattice_order(p), Reference::ideal);
+    REQUIRE(r.validity.ratio.size() == 3);
+    CHECK(r.validity.invalid == 0);
+    CHECK(r.validity.ratio(1) == Approx(1.0));  // straight-sided: det J constant
+    CHECK(r.validity.min_det(1) == Approx(1.0));
+    CHECK(r.validity.min_det(2) == Approx(2.0));
+    for (std::size_t j = 0; j < qs.size(); ++j) {
+      INFO(qs[j]->name);
+      const MeshMeasure& q = r.measures[j];
+      REQUIRE(q.element_min.size() == 3);
+      REQUIRE(q.node_values.rows() == n);
+      CHECK(q.element_min(1) == Approx(1.0));
+      CHECK(q.node_values.col(1).minCoeff() == Approx(1.0));
+      CHECK(q.node_values.col(2).maxCoeff() == Approx(q.element_min(2)));
+    }
+    // W = diag(2, 1): Q7 = 2 omega / |W|_F^2 = 4 / 5, Q17 = min(omega, 1/omega) = 1/2.
+    CHECK(r.measures[6].element_min(2) == Approx(0.8));
+    CHECK(r.measures[15].element_min(2) == Approx(0.5));
+  }
 }

@@ -12,13 +12,16 @@ void run(Context& ctx, const NoOptions&) {
   ctx.log.report("info: {} (CAD: {})", ctx.input, ctx.has_cad ? "yes" : "no");
   ctx.log.report("  order {}: {} nodes, {} triangles, {} boundary lines, {} points", m.order,
                  m.num_nodes(), m.num_triangles(), m.num_lines(), m.point_node.size());
+  if (m.num_quads() > 0)
+    ctx.log.report("  and {} quadrilaterals ('{}')", m.num_quads(), quad_type_name(m.order));
   int count[3] = {0, 0, 0};
   for (const Entity& e : m.entities) ++count[e.dim];
   ctx.log.report("  entities: {} points, {} curves, {} surfaces", count[0], count[1], count[2]);
 
-  std::map<int, int> lines_on, tris_on;
+  std::map<int, int> lines_on, tris_on;  // tris_on: 2D elements
   for (int c : m.line_entity) ++lines_on[c];
   for (int s : m.tri_entity) ++tris_on[s];
+  for (int s : m.quad_entity) ++tris_on[s];
   if (m.physicals.empty()) ctx.log.report("  physical groups: none");
   for (const PhysicalGroup& g : m.physicals) {
     int elements = 0;
@@ -31,8 +34,9 @@ void run(Context& ctx, const NoOptions&) {
 }  // namespace
 
 Stage info_stage() {
-  return make_stage<NoOptions>(
-      "info", "print counts, order, entities and physical groups of the mesh", {}, run);
+  return make_stage<NoOptions>("info",
+                               "print counts, order, entities and physical groups of the mesh", {},
+                               run, false, true);
 }
 
 }  // namespace homesh

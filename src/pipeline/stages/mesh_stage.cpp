@@ -1,5 +1,6 @@
 #include "pipeline/stages/mesh_stage.h"
 
+#include <fmt/core.h>
 #include <gmsh.h>
 
 #include <chrono>
@@ -22,8 +23,11 @@ void run(Context& ctx, const MeshOptions& o) {
   ctx.require_cad("mesh");
   ctx.mesh = gmsh_mesh(ctx.input, o);
   ctx.fields.clear();
-  ctx.log.info("mesh: {} nodes, {} triangles, {} boundary lines", ctx.mesh->num_nodes(),
-               ctx.mesh->num_triangles(), ctx.mesh->num_lines());
+  ctx.log.info(
+      "mesh: {} nodes, {} triangles{}, {} boundary lines", ctx.mesh->num_nodes(),
+      ctx.mesh->num_triangles(),
+      ctx.mesh->num_quads() > 0 ? fmt::format(", {} quadrilaterals", ctx.mesh->num_quads()) : "",
+      ctx.mesh->num_lines());
 }
 
 }  // namespace
@@ -64,7 +68,7 @@ Stage mesh_stage() {
   });
   return make_stage<MeshOptions>(
       "mesh", "new linear triangle mesh of the input's CAD by Gmsh (replaces any mesh)", t, run,
-      true);
+      true, true);
 }
 
 }  // namespace homesh

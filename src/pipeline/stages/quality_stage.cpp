@@ -24,16 +24,17 @@ bool is_measure(const std::string& name) {
   });
 }
 
-// A view of the triangles whose certified minJ/maxJ is below `threshold`
+// A view of the 2D elements whose certified minJ/maxJ is below `threshold`
 // (their value on every node), so Gmsh's GUI shows where they are.
 void add_poor_elements(Context& ctx, const MeshValidity& v, double threshold) {
   const Mesh& m = *ctx.mesh;
   Field f{fmt::format("homesh: elements of certified minJ/maxJ < {:g}", threshold),
           Field::Kind::ElementNode,
           {}};
-  for (int e = 0; e < m.num_triangles(); ++e)
+  for (int e = 0; e < m.num_elements_2d(); ++e)
     if (v.ratio(e) < threshold) f.elements.push_back(e);
-  f.values.resize(m.tri.rows(), static_cast<Eigen::Index>(f.elements.size()));
+  f.values.resize(m.num_quads() > 0 ? m.quad.rows() : m.tri.rows(),
+                  static_cast<Eigen::Index>(f.elements.size()));
   for (std::size_t k = 0; k < f.elements.size(); ++k)
     f.values.col(static_cast<Eigen::Index>(k)).setConstant(v.ratio(f.elements[k]));
   ctx.set_field(std::move(f));
@@ -55,6 +56,7 @@ void run(Context& ctx, const QualityOptions& o) {
   const MeshValidity& v = quality.validity;
   ctx.set_field({kValidityFieldName, Field::Kind::Element, v.ratio.transpose(), true, true});
   ctx.results = {{"triangles", m.num_triangles()},
+                 {"quadrilaterals", m.num_quads()},
                  {"invalid", v.invalid},
                  {"worst", v.worst},
                  {"worst_triangle", static_cast<int>(m.triangle_tag(v.worst_element))}};
@@ -75,9 +77,11 @@ void run(Context& ctx, const QualityOptions& o) {
   const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
 
   ctx.log.info(
-      "quality: {} triangles of order {} (bounds and measures {:.3f} s, {:.3f} s CPU on {} "
+      "quality: {} triangles{} of order {} (bounds and measures {:.3f} s, {:.3f} s CPU on {} "
       "thread(s); views {:.3f} s)",
-      m.num_triangles(), m.order, seconds(t0, t1), cpu, used, seconds(t1, t2));
+      m.num_triangles(),
+      m.num_quads() > 0 ? fmt::format(" and {} quadrilaterals", m.num_quads()) : "", m.order,
+      seconds(t0, t1), cpu, used, seconds(t1, t2));
   ctx.log.info("  {}", validity_line(m, v));
   ctx.log.info("  measure per element: minimum, mean, | count in 10 bins over [0, 1] |");
   for (const auto& line : histograms) ctx.log.info("{}", line);
@@ -107,8 +111,9 @@ Stage quality_stage() {
         "elements of certified minJ/maxJ below this get a view of their own");
   t.add("threads", &O::threads, integer(0, 1024),
         "threads for bounds and measures (0 = one per core)");
-  return make_stage<O>(
-      "quality", "certified validity (minJ/maxJ) and quality measures: views and a report", t, run);
+  return make_stage<O>("quality",
+                       "certified validity (minJ/maxJ) and quality measures: views and a report", t,
+                       run, false, true);
 }
 
 }  // namespace homesh

@@ -211,7 +211,7 @@ Stage voronoi_stage() {
   return make_stage<O>("voronoi",
                        "new linear triangle mesh of the input's CAD, dual to the crystal Voronoi "
                        "diagram (thesis Ch 2; replaces any mesh)",
-                       t, run, true);
+                       t, run, true, true);
 }
 
 }  // namespace homesh
