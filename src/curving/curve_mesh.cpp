@@ -27,6 +27,38 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   CurveResult r;
   std::vector<int> local_region;  // step 1's poor elements and their rings
   Mesh placed;                    // step 1's best guess, if step 1 ran
+  std::vector<bool> held = boundary;
+  if (opt.fixed_vertices) {
+    const std::vector<bool> vertex = vertex_nodes(raised);
+    for (int i = 0; i < raised.num_nodes(); ++i)
+      if (vertex[i] && !held[i]) {
+        held[i] = true;
+        target.col(i) = raised.x.col(i);
+      }
+  }
+  // The elastic solve on `region` only: every node but those inside it (on none of the
+  // triangles outside) prescribed at step 1's guess, solved from the straight mesh to it.
+  auto solve_round = [&](const std::vector<int>& region) {
+    std::vector<bool> outside(raised.num_nodes(), false);
+    std::vector<bool> in_region(raised.num_triangles(), false);
+    for (int e : region) in_region[e] = true;
+    for (int e = 0; e < raised.num_triangles(); ++e)
+      if (!in_region[e])
+        for (int k = 0; k < raised.tri.rows(); ++k) outside[raised.tri(k, e)] = true;
+    std::vector<bool> prescribed = held;
+    for (int i = 0; i < raised.num_nodes(); ++i) prescribed[i] = prescribed[i] || outside[i];
+    DeformOptions around = opt.deform;
+    around.region = region;
+    return deform_mesh(raised, placed.x, prescribed, around);
+  };
+  const bool rings = opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order;
+  auto poor_region = [&](const MeshValidity& v, double bar) {
+    std::vector<bool> poor_nodes(placed.num_nodes(), false);
+    for (int e = 0; e < placed.num_triangles(); ++e)
+      if (v.ratio(e) < bar)
+        for (int k = 0; k < placed.tri.rows(); ++k) poor_nodes[placed.tri(k, e)] = true;
+    return moving_region(placed, poor_nodes, opt.placed_rings);
+  };
 
   // 1. Placed: the boundary nodes at their targets, the interior blended from the wall
   // elements' edges, or else moved with the wall near it; the better guess is kept.
@@ -56,6 +88,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
       if (better) {
         v = std::move(w);
         placed = std::move(guesses[g]);
+        r.guess = g == 1 ? "propagated" : opt.blend ? "blended" : "straight";
       }
       if (v.invalid == 0 && v.worst >= opt.accept_placed) break;
     }
@@ -63,46 +96,34 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     if (v.invalid == 0 && v.worst >= opt.accept_placed) {
       r.placed = true;
       r.worst_ratio = v.worst;
+      // Good enough, not yet `polish`: a solve round the elements below it, kept if better.
+      if (rings && v.worst < opt.polish) {
+        const auto t = std::chrono::steady_clock::now();
+        DeformResult d = solve_round(poor_region(v, opt.polish));
+        r.elastic_seconds = since(t);
+        if (d.complete && d.worst_ratio > v.worst) {
+          r.placed = false;
+          r.polished = true;
+          r.worst_ratio = d.worst_ratio;
+          r.deform = std::move(d);
+          r.mesh = r.deform.mesh;
+          r.seconds = since(start);
+          return r;
+        }
+      }
       r.mesh = std::move(placed);
       r.seconds = since(start);
       return r;
     }
     // Poor or invalid somewhere: step 2 first solves only round those elements.
-    if (opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order) {
-      std::vector<bool> poor_nodes(placed.num_nodes(), false);
-      for (int e = 0; e < placed.num_triangles(); ++e)
-        if (v.ratio(e) < opt.accept_placed)
-          for (int k = 0; k < placed.tri.rows(); ++k) poor_nodes[placed.tri(k, e)] = true;
-      local_region = moving_region(placed, poor_nodes, opt.placed_rings);
-    }
+    if (rings) local_region = poor_region(v, opt.accept_placed);
   }
 
   // 2. Elastic.
   const auto elastic = std::chrono::steady_clock::now();
-  std::vector<bool> held = boundary;
-  if (opt.fixed_vertices) {
-    const std::vector<bool> vertex = vertex_nodes(raised);
-    for (int i = 0; i < raised.num_nodes(); ++i)
-      if (vertex[i] && !held[i]) {
-        held[i] = true;
-        target.col(i) = raised.x.col(i);
-      }
-  }
   bool local = false;
   if (!local_region.empty()) {
-    // Every node but those inside the region (on none of the triangles outside it) is
-    // prescribed at step 1's guess; the region is solved from the straight mesh to it.
-    std::vector<bool> outside(raised.num_nodes(), false);
-    std::vector<bool> in_region(raised.num_triangles(), false);
-    for (int e : local_region) in_region[e] = true;
-    for (int e = 0; e < raised.num_triangles(); ++e)
-      if (!in_region[e])
-        for (int k = 0; k < raised.tri.rows(); ++k) outside[raised.tri(k, e)] = true;
-    std::vector<bool> prescribed = held;
-    for (int i = 0; i < raised.num_nodes(); ++i) prescribed[i] = prescribed[i] || outside[i];
-    DeformOptions around = opt.deform;
-    around.region = local_region;
-    r.deform = deform_mesh(raised, placed.x, prescribed, around);
+    r.deform = solve_round(local_region);
     local = r.deform.complete && r.deform.worst_ratio >= opt.accept_placed;
   }
   if (!local) r.deform = deform_mesh(raised, target, held, opt.deform);

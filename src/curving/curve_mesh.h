@@ -21,6 +21,7 @@
 //    free, optimised likewise, and the better of the two results kept.
 #include <Eigen/Core>
 #include <functional>
+#include <string>
 
 #include "core/mesh.h"
 #include "curving/boundary_reconstruction.h"
@@ -43,18 +44,19 @@ struct CurveOptions {
   /// the elements with a moved boundary node blended from their edges
   /// (curving/interior_blending.h), not left straight.
   bool blend = true;
+  /// A guess kept at `accept_placed` or better but below this (p >= placed_rings_from_order,
+  /// placed_rings > 0) is solved round its elements below this too, the result kept if
+  /// better; no solve beyond (<= accept_placed: off). Where Gmsh's FastCurving beat a
+  /// guess kept at 0.9 (star1_bl_1e-3 p = 3: 0.919 against 0.936) this lifts it (0.981 in
+  /// 0.11 s, FastCurving's 0.25 s); the bar 0.98 for keeping a guess at all was slower.
+  double polish = 0.98;
   /// > 0: if the blended guess falls short, step 1 also tries moving the interior near
   /// the wall, each node with the nearest wall line's deviation, fading over this many
   /// line lengths (curving/wall_propagation.h), and keeps the better guess. On
   /// circle_bl_1e-5_fine at p = 4 (first cell 1e-5, thinner than the wall edges' bulge)
   /// the blended guess is invalid and the solve within reach took 7 s (12179 triangles);
   /// propagated it is 0.994 with no solve, 0.30 s (Gmsh's FastCurving: 0.50 in 0.34 s).
-  /// Chosen on issue 16's corpus (scripts/bench/README.md), against blending alone:
-  /// within Gmsh's fastest valid method's time in 22 / 46 runs instead of 14, mean worst
-  /// minJ/maxJ 0.899 instead of 0.887, lowest 0.802 (blending alone timed out once). It
-  /// costs some quality where a guess passes the 0.9 bar and a solve would have reached
-  /// higher: NACA-7526 with 15 layers at p = 4 is kept as propagated at 0.962 in 0.05 s,
-  /// solved it reaches 0.994 in 1 s (`placed=0.99` asks for that; the main job does).
+  /// On by default, chosen on issue 16's corpus with `polish` (scripts/bench/README.md).
   double propagate = 1;
   /// Placed below accept_placed (or invalid): the elastic solve is first posed only on
   /// the elements below it grown by this many rings (through shared nodes), kept if it
@@ -96,20 +98,22 @@ struct CurveOptions {
 };
 
 struct CurveResult {
-  Mesh mesh;                      ///< the curved mesh (valid if deform.complete or placed)
-  double worst_ratio = 1;         ///< its worst certified minJ/maxJ
-  bool placed = false;            ///< step 1 sufficed: no solve, no optimisation
-  double placed_worst = 0;        ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
-  DeformResult deform;            ///< of the last solve (if any)
-  bool fell_back = false;         ///< the restricted solve fell short: solved with vertices free
-  bool fell_back_whole = false;   ///< and that on the whole mesh (the region's fell short too)
-  double restricted_reached = 0;  ///< the restricted solve's reached fraction, if it fell back
-  bool freed_vertices = false;    ///< the result comes from step 3's solve with vertices free
-  bool optimised = false;         ///< step 3 ran
-  OptimiseResult optimisation;    ///< its result (its mesh moved to `mesh`)
-  double seconds = 0;             ///< wall time of the whole curving
-  double elastic_seconds = 0;     ///< of which the elastic solves
-  double optimise_seconds = 0;    ///< and the optimiser
+  Mesh mesh;                       ///< the curved mesh (valid if deform.complete or placed)
+  double worst_ratio = 1;          ///< its worst certified minJ/maxJ
+  bool placed = false;             ///< step 1 sufficed: no solve, no optimisation
+  bool polished = false;           ///< step 1's guess sufficed, then solved round its poorest
+  std::string guess = "straight";  ///< step 1's guess kept: straight, blended or propagated
+  double placed_worst = 0;         ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
+  DeformResult deform;             ///< of the last solve (if any)
+  bool fell_back = false;          ///< the restricted solve fell short: solved with vertices free
+  bool fell_back_whole = false;    ///< and that on the whole mesh (the region's fell short too)
+  double restricted_reached = 0;   ///< the restricted solve's reached fraction, if it fell back
+  bool freed_vertices = false;     ///< the result comes from step 3's solve with vertices free
+  bool optimised = false;          ///< step 3 ran
+  OptimiseResult optimisation;     ///< its result (its mesh moved to `mesh`)
+  double seconds = 0;              ///< wall time of the whole curving
+  double elastic_seconds = 0;      ///< of which the elastic solves
+  double optimise_seconds = 0;     ///< and the optimiser
 };
 
 /// m at order opt.order with its boundary nodes at place(raised) (2 by nodes

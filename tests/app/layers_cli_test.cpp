@@ -162,9 +162,9 @@ TEST_CASE("layers: 5 layers on a channel's floor end along inlet and outlet, p =
   CHECK(l.after == l.before - 2 * l.cleared + 2 * 5 * l.wall_edges);
   std::smatch q;
   REQUIRE(std::regex_search(r.output, q, std::regex(R"(validity: .* worst minJ/maxJ (\d\.\d+))")));
-  // Measured 0.925: the wall's bulge moved into the layers (curve's propagate), kept
-  // without a solve above its 0.9 bar (solved: 0.9968).
-  CHECK(std::stod(q[1]) > 0.92);
+  // Measured 0.9809: the wall's bulge moved into the layers (curve's propagate, 0.925),
+  // then solved round its elements below 0.98 (polish; the solve within reach: 0.9968).
+  CHECK(std::stod(q[1]) > 0.98);
 
   // The inlet (curve 6) is split at the layer nodes: its corners below the thickness
   // d_5 = 0.0090431 are the floor's end, the 4 layer nodes and the front node, at the

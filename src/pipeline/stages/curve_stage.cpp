@@ -78,9 +78,14 @@ void run(Context& ctx, const CurveOptions& o) {
         "the boundary motion ({} triangles would become invalid); try more increments or "
         "another formulation",
         d.formulation, 100 * r.reached, r.invalid_at_failure));
-  if (!c.placed && o.accept_placed <= 1)
-    ctx.log.info("curve: boundary nodes placed, interior {}: {}; solving",
-                 o.blend ? "blended" : "straight",
+  if (c.polished)
+    ctx.log.info(
+        "curve: order {}, boundary nodes placed, interior {}: worst minJ/maxJ {:.4f} >= {:g}; "
+        "solved round its elements below {:g} ({} triangles): worst minJ/maxJ {:.4f}, {:.2f} s",
+        o.order, c.guess, c.placed_worst, o.accept_placed, o.polish, r.solved_triangles,
+        r.worst_ratio, c.elastic_seconds);
+  else if (!c.placed && o.accept_placed <= 1)
+    ctx.log.info("curve: boundary nodes placed, interior {}: {}; solving", c.guess,
                  c.placed_worst > 0
                      ? fmt::format("worst minJ/maxJ {:.4f} < {:g}", c.placed_worst, o.accept_placed)
                      : std::string("not certified valid"));
@@ -88,8 +93,8 @@ void run(Context& ctx, const CurveOptions& o) {
     ctx.log.info(
         "curve: order {}, boundary nodes placed, interior {}: worst minJ/maxJ {:.4f} >= {:g}, "
         "no solve",
-        o.order, o.blend ? "blended" : "straight", c.worst_ratio, o.accept_placed);
-  else
+        o.order, c.guess, c.worst_ratio, o.accept_placed);
+  else if (!c.polished)
     ctx.log.info(
         "curve: order {}, formulation {}, nu {}, posed on {} of {} triangles: {} solves, worst "
         "minJ/maxJ {:.4f}, {:.2f} s",
@@ -108,6 +113,7 @@ void run(Context& ctx, const CurveOptions& o) {
   ctx.log.info("curve: worst minJ/maxJ {:.4f}, {:.2f} s", c.worst_ratio, c.seconds);
   ctx.results["worst"] = c.worst_ratio;
   ctx.results["placed"] = c.placed;
+  ctx.results["polished"] = c.polished;
   ctx.results["optimised"] = c.optimised;
   ctx.results["seconds"] = c.seconds;
   m = std::move(c.mesh);
@@ -144,6 +150,9 @@ Stage curve_stage() {
         "keep the mesh with the boundary nodes placed and the interior blended (or propagated), "
         "without a "
         "solve, if its worst minJ/maxJ is at least this (> 1: always solve)");
+  t.add("polish", &CurveOptions::polish, real(0),
+        "a first guess kept at `placed` but below this is also solved round its elements "
+        "below this, the result kept if better (<= placed: off)");
   t.add("blend", &CurveOptions::blend, boolean(),
         "place the interior nodes of the elements on the boundary by blending their curved "
         "edges in (0: leave them straight)");
