@@ -7,7 +7,7 @@
 
 namespace homesh {
 
-LagrangeBasis::LagrangeBasis(int p) : p_(p) {
+LagrangeBasis::LagrangeBasis(int p) : NodalBasis(p) {
   if (p < 1 || p > kMaxOrder)
     throw Error("LagrangeBasis: order " + std::to_string(p) + " out of range 1.." +
                 std::to_string(kMaxOrder));
@@ -46,36 +46,6 @@ void LagrangeBasis::evaluate(const Eigen::Vector2d& uv, double* N, double* dNdu,
       if (dNdv) dNdv[k] = d0 + r0 * r1 * dR[2][b];
     }
   }
-}
-
-Eigen::VectorXd LagrangeBasis::values(const Eigen::Vector2d& uv) const {
-  Eigen::VectorXd N(size());
-  evaluate(uv, N.data(), nullptr, nullptr);
-  return N;
-}
-
-Eigen::Matrix2Xd LagrangeBasis::gradients(const Eigen::Vector2d& uv) const {
-  Eigen::VectorXd du(size()), dv(size());
-  evaluate(uv, nullptr, du.data(), dv.data());
-  Eigen::Matrix2Xd dN(2, size());
-  dN.row(0) = du.transpose();
-  dN.row(1) = dv.transpose();
-  return dN;
-}
-
-Eigen::MatrixXd LagrangeBasis::tabulate_values(const Eigen::Matrix2Xd& uv) const {
-  Eigen::MatrixXd N(size(), uv.cols());
-  for (Eigen::Index q = 0; q < uv.cols(); ++q)
-    evaluate(uv.col(q), N.col(q).data(), nullptr, nullptr);
-  return N;
-}
-
-void LagrangeBasis::tabulate_gradients(const Eigen::Matrix2Xd& uv, Eigen::MatrixXd& dNdu,
-                                       Eigen::MatrixXd& dNdv) const {
-  dNdu.resize(size(), uv.cols());
-  dNdv.resize(size(), uv.cols());
-  for (Eigen::Index q = 0; q < uv.cols(); ++q)
-    evaluate(uv.col(q), nullptr, dNdu.col(q).data(), dNdv.col(q).data());
 }
 
 }  // namespace homesh

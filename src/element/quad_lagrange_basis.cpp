@@ -27,7 +27,7 @@ void line_lagrange(int p, double t, double* L, double* dL) {
 
 }  // namespace
 
-QuadLagrangeBasis::QuadLagrangeBasis(int p) : p_(p) {
+QuadLagrangeBasis::QuadLagrangeBasis(int p) : NodalBasis(p) {
   if (p < 1 || p > kMaxOrder)
     throw Error("QuadLagrangeBasis: order " + std::to_string(p) + " out of range 1.." +
                 std::to_string(kMaxOrder));
@@ -46,29 +46,6 @@ void QuadLagrangeBasis::evaluate(const Eigen::Vector2d& uv, double* N, double* d
     if (dNdu) dNdu[k] = dLu[i] * Lv[j];
     if (dNdv) dNdv[k] = Lu[i] * dLv[j];
   }
-}
-
-Eigen::VectorXd QuadLagrangeBasis::values(const Eigen::Vector2d& uv) const {
-  Eigen::VectorXd N(size());
-  evaluate(uv, N.data(), nullptr, nullptr);
-  return N;
-}
-
-Eigen::Matrix2Xd QuadLagrangeBasis::gradients(const Eigen::Vector2d& uv) const {
-  Eigen::VectorXd du(size()), dv(size());
-  evaluate(uv, nullptr, du.data(), dv.data());
-  Eigen::Matrix2Xd dN(2, size());
-  dN.row(0) = du.transpose();
-  dN.row(1) = dv.transpose();
-  return dN;
-}
-
-void QuadLagrangeBasis::tabulate_gradients(const Eigen::Matrix2Xd& uv, Eigen::MatrixXd& dNdu,
-                                           Eigen::MatrixXd& dNdv) const {
-  dNdu.resize(size(), uv.cols());
-  dNdv.resize(size(), uv.cols());
-  for (Eigen::Index q = 0; q < uv.cols(); ++q)
-    evaluate(uv.col(q), nullptr, dNdu.col(q).data(), dNdv.col(q).data());
 }
 
 }  // namespace homesh

@@ -13,34 +13,20 @@
 #include <Eigen/Core>
 
 #include "core/mesh.h"
+#include "element/nodal_basis.h"
 
 namespace homesh {
 
-class QuadLagrangeBasis {
+class QuadLagrangeBasis : public NodalBasis<QuadLagrangeBasis> {
  public:
   /// Order 1 <= p <= kMaxOrder (core/mesh.h); throws homesh::Error otherwise.
   explicit QuadLagrangeBasis(int p);
 
-  int order() const { return p_; }
-  int size() const { return static_cast<int>(nodes_.cols()); }
-  /// 2 by size() reference nodes.
-  const Eigen::Matrix2Xd& nodes() const { return nodes_; }
-
-  /// size() values N_k(u, v).
-  Eigen::VectorXd values(const Eigen::Vector2d& uv) const;
-  /// 2 by size() derivatives: row 0 dN_k/du, row 1 dN_k/dv.
-  Eigen::Matrix2Xd gradients(const Eigen::Vector2d& uv) const;
-
-  /// size() by #points dN/du and dN/dv at the columns of `uv` (resized here).
-  void tabulate_gradients(const Eigen::Matrix2Xd& uv, Eigen::MatrixXd& dNdu,
-                          Eigen::MatrixXd& dNdv) const;
-
  private:
+  friend class NodalBasis<QuadLagrangeBasis>;
   // Writes the size() values and/or derivatives at uv; null outputs are skipped.
   void evaluate(const Eigen::Vector2d& uv, double* N, double* dNdu, double* dNdv) const;
 
-  int p_;
-  Eigen::Matrix2Xd nodes_;
   Eigen::Matrix2Xi index_;  // (i, j) of each node
 };
 
