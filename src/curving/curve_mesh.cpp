@@ -97,7 +97,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
       r.placed = true;
       r.worst_ratio = v.worst;
       // Good enough, not yet `polish`: a solve round the elements below it, kept if better.
-      if (rings && v.worst < opt.polish) {
+      if (opt.placed_rings > 0 && v.worst < opt.polish) {
         const auto t = std::chrono::steady_clock::now();
         DeformResult d = solve_round(poor_region(v, opt.polish));
         r.elastic_seconds = since(t);
@@ -125,6 +125,18 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   if (!local_region.empty()) {
     r.deform = solve_round(local_region);
     local = r.deform.complete && r.deform.worst_ratio >= opt.accept_placed;
+    // Kept, but below `polish`: solved again round its elements below that, from it.
+    if (local && r.deform.worst_ratio < opt.polish) {
+      placed = r.deform.mesh;
+      DeformResult d =
+          solve_round(poor_region(mesh_validity(placed, opt.optimiser.bounds), opt.polish));
+      if (d.complete && d.worst_ratio > r.deform.worst_ratio) {
+        d.solved_triangles += r.deform.solved_triangles;
+        d.solves += r.deform.solves;
+        r.deform = std::move(d);
+        r.polished = true;
+      }
+    }
   }
   if (!local) r.deform = deform_mesh(raised, target, held, opt.deform);
   const bool restricted = opt.fixed_vertices || opt.deform.reach > 0 || opt.deform.layers > 0;

@@ -80,10 +80,15 @@ void run(Context& ctx, const CurveOptions& o) {
         d.formulation, 100 * r.reached, r.invalid_at_failure));
   if (c.polished)
     ctx.log.info(
-        "curve: order {}, boundary nodes placed, interior {}: worst minJ/maxJ {:.4f} >= {:g}; "
-        "solved round its elements below {:g} ({} triangles): worst minJ/maxJ {:.4f}, {:.2f} s",
-        o.order, c.guess, c.placed_worst, o.accept_placed, o.polish, r.solved_triangles,
-        r.worst_ratio, c.elastic_seconds);
+        "curve: order {}, boundary nodes placed, interior {}: {}; solved round its elements "
+        "below {:g}{} ({} triangles): worst minJ/maxJ {:.4f}, {:.2f} s",
+        o.order, c.guess,
+        c.placed_worst > 0 ? fmt::format("worst minJ/maxJ {:.4f}", c.placed_worst)
+                           : std::string("not certified valid"),
+        o.polish,
+        c.placed_worst < o.accept_placed ? fmt::format(" (first below {:g})", o.accept_placed)
+                                         : std::string(),
+        r.solved_triangles, r.worst_ratio, c.elastic_seconds);
   else if (!c.placed && o.accept_placed <= 1)
     ctx.log.info("curve: boundary nodes placed, interior {}: {}; solving", c.guess,
                  c.placed_worst > 0
