@@ -71,7 +71,8 @@ struct CurveOptions {
   /// their interiors left straight it cost a downstream solver accuracy. DOLFINx's Poisson
   /// study on the plate (scripts/examples/dolfinx_poisson.py, p = 3, finest mesh): L2 error
   /// 5.3e-7, rate 4.22 after the solve within `reach`; 7.2e-7, 3.55 with 1 ring and
-  /// straight interiors; 4.7e-7, 4.09 with 1 ring and blending (p = 2 unchanged, 4.1e-5).
+  /// straight interiors; 4.7e-7, 4.09 with 1 ring and blending (p = 2 unchanged, 4.1e-5);
+  /// 5.2e-7, 4.04 with the polish too.
   int placed_rings = 1;
   /// ... from this order on: at p = 2 the usual solve is cheap (0.03 s on
   /// star4_nolayer_coarse), and the thesis' rotation experiments (tests/app/rotate_cli_test.cpp,
