@@ -27,9 +27,9 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   CurveResult r;
   std::vector<int> local_region;  // step 1's poor elements and their rings
   Mesh placed;                    // step 1's best guess, if step 1 ran
+  const std::vector<bool> vertex = vertex_nodes(raised);
   std::vector<bool> held = boundary;
   if (opt.fixed_vertices) {
-    const std::vector<bool> vertex = vertex_nodes(raised);
     for (int i = 0; i < raised.num_nodes(); ++i)
       if (vertex[i] && !held[i]) {
         held[i] = true;
@@ -67,19 +67,18 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     for (int i = 0; i < on_wall.num_nodes(); ++i)
       if (boundary[i]) on_wall.x.col(i) = target.col(i);
     std::vector<Mesh> guesses;
-    if (opt.blend) blend_interiors(on_wall, boundary);
-    guesses.push_back(on_wall);
+    Mesh propagated;
     if (opt.propagate > 0) {
+      // From the straight interior: propagation moves every free node near the wall.
       std::vector<bool> free(raised.num_nodes());
-      const std::vector<bool> vertex = vertex_nodes(raised);
       for (int i = 0; i < raised.num_nodes(); ++i)
         free[i] = !boundary[i] && !(opt.fixed_vertices && vertex[i]);
-      guesses.push_back(on_wall);
-      // Over the whole interior, blended or not: propagation moves every free node near it.
-      for (int i = 0; i < raised.num_nodes(); ++i)
-        if (free[i]) guesses.back().x.col(i) = raised.x.col(i);
-      guesses.back().x += propagate_wall_displacement(raised, target, free, opt.propagate);
+      propagated = on_wall;
+      propagated.x += propagate_wall_displacement(raised, target, free, opt.propagate);
     }
+    if (opt.blend) blend_interiors(on_wall, boundary);
+    guesses.push_back(std::move(on_wall));
+    if (opt.propagate > 0) guesses.push_back(std::move(propagated));
     MeshValidity v;
     for (std::size_t g = 0; g < guesses.size(); ++g) {
       MeshValidity w = mesh_validity(guesses[g], opt.optimiser.bounds);

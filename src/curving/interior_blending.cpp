@@ -1,7 +1,6 @@
 #include "curving/interior_blending.h"
 
-#include <algorithm>
-
+#include "element/line_interpolation.h"
 #include "element/reference_nodes.h"
 
 namespace homesh {
@@ -26,42 +25,28 @@ Eigen::Matrix2Xd blend_interior(const Eigen::Matrix2Xd& X, int p) {
       q[k].col(j) = (X.col(3 + k * (p - 1) + j) - chord) / (t(j) * (1 - t(j)));
     }
   }
-  // q_k at s, by Lagrange interpolation through the t_j.
-  auto q_at = [&](int k, double s) {
-    Eigen::Vector2d v = Eigen::Vector2d::Zero();
-    for (int j = 0; j < p - 1; ++j) {
-      double w = 1;
-      for (int i = 0; i < p - 1; ++i)
-        if (i != j) w *= (s - t(i)) / (t(j) - t(i));
-      v += w * q[k].col(j);
-    }
-    return v;
-  };
   for (int i = 3 * p; i < n; ++i) {
     const double l[3] = {1 - uv(0, i) - uv(1, i), uv(0, i), uv(1, i)};
     Eigen::Vector2d x = l[0] * X.col(0) + l[1] * X.col(1) + l[2] * X.col(2);
     for (int k = 0; k < 3; ++k) {
       const double la = l[corner_a[k]], lb = l[corner_b[k]];
-      x += la * lb * q_at(k, (1 + lb - la) / 2);
+      x += la * lb * interpolate_on_line(t, q[k], (1 + lb - la) / 2);
     }
     out.col(i) = x;
   }
   return out;
 }
 
-int blend_interiors(Mesh& m, const std::vector<bool>& moved, const std::vector<int>& except) {
+void blend_interiors(Mesh& m, const std::vector<bool>& moved) {
   const int p = m.order;
-  if (p < 3) return 0;
-  int blended = 0;
+  if (p < 3) return;
   for (int e = 0; e < m.num_triangles(); ++e) {
     bool touched = false;
     for (int k = 3; k < 3 * p && !touched; ++k) touched = moved[m.tri(k, e)];
-    if (!touched || std::binary_search(except.begin(), except.end(), e)) continue;
+    if (!touched) continue;
     const Eigen::Matrix2Xd X = blend_interior(m.triangle_nodes(e), p);
     for (Eigen::Index k = 3 * p; k < m.tri.rows(); ++k) m.x.col(m.tri(k, e)) = X.col(k);
-    ++blended;
   }
-  return blended;
 }
 
 }  // namespace homesh

@@ -27,8 +27,7 @@ namespace homesh {
 /// its edges; p < 3 (no interior nodes) returns X.
 Eigen::Matrix2Xd blend_interior(const Eigen::Matrix2Xd& X, int p);
 
-/// blend_interior on every triangle of m with an edge node i where moved[i] and
-/// outside `except` (ascending triangle indices); returns how many it blended.
-int blend_interiors(Mesh& m, const std::vector<bool>& moved, const std::vector<int>& except = {});
+/// blend_interior on every triangle of m with an edge node i where moved[i].
+void blend_interiors(Mesh& m, const std::vector<bool>& moved);
 
 }  // namespace homesh

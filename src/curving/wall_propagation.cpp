@@ -5,6 +5,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "element/line_interpolation.h"
 #include "element/reference_nodes.h"
 
 namespace homesh {
@@ -22,7 +23,7 @@ Eigen::Matrix2Xd propagate_wall_displacement(const Mesh& m, const Eigen::Matrix2
                                              const std::vector<bool>& free, double radius) {
   Eigen::Matrix2Xd u = Eigen::Matrix2Xd::Zero(2, m.num_nodes());
   const int p = m.order;
-  const Eigen::RowVectorXd tn = reference_line_nodes(p);
+  const Eigen::VectorXd tn = reference_line_nodes(p).transpose();
   std::vector<WallLine> lines;
   for (int l = 0; l < m.num_lines(); ++l) {
     WallLine w;
@@ -51,17 +52,6 @@ Eigen::Matrix2Xd propagate_wall_displacement(const Mesh& m, const Eigen::Matrix2
     const auto [i, j] = key(mid);
     buckets[hash(i, j)].push_back(k);
   }
-  // Lagrange weights of the line's nodes at t.
-  auto deviation = [&](const WallLine& w, double t) {
-    Eigen::Vector2d d = Eigen::Vector2d::Zero();
-    for (int k = 0; k <= p; ++k) {
-      double c = 1;
-      for (int i = 0; i <= p; ++i)
-        if (i != k) c *= (t - tn(i)) / (tn(k) - tn(i));
-      d += c * w.dev.col(k);
-    }
-    return d;
-  };
   for (int n = 0; n < m.num_nodes(); ++n) {
     if (!free[n]) continue;
     const Eigen::Vector2d x = m.x.col(n);
@@ -89,7 +79,7 @@ Eigen::Matrix2Xd propagate_wall_displacement(const Mesh& m, const Eigen::Matrix2
     const WallLine& w = lines[best_line];
     const double r = best / (radius * w.length);
     if (r >= 1) continue;
-    u.col(n) = (1 - 3 * r * r + 2 * r * r * r) * deviation(w, best_t);
+    u.col(n) = (1 - 3 * r * r + 2 * r * r * r) * interpolate_on_line(tn, w.dev, best_t);
   }
   return u;
 }
