@@ -152,12 +152,13 @@ Stage curve_stage() {
       "the boundary triangles of the moving boundary, the rest held still (a boundary "
       "layer's thin elements do not shrink this region); the whole mesh if that fails");
   t.add("placed", &CurveOptions::accept_placed, real(0),
-        "keep the mesh with the boundary nodes placed and the interior blended (or propagated), "
-        "without a "
-        "solve, if its worst minJ/maxJ is at least this (> 1: always solve)");
+        "keep the mesh with the boundary nodes placed and the interior blended (or "
+        "propagated), without a solve, if its worst minJ/maxJ is at least this (> 1: always "
+        "solve)");
   t.add("polish", &CurveOptions::polish, real(0),
-        "a first guess kept at `placed` but below this is also solved round its elements "
-        "below this, the result kept if better (<= placed: off)");
+        "a first guess kept at `placed`, or the local solve's result (`rings`), if below "
+        "this, is solved again round its elements below this, the result kept if better "
+        "(<= placed: off)");
   t.add("blend", &CurveOptions::blend, boolean(),
         "place the interior nodes of the elements on the boundary by blending their curved "
         "edges in (0: leave them straight)");
