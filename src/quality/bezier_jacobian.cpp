@@ -1,14 +1,12 @@
 #include "quality/bezier_jacobian.h"
 
-#include <array>
-#include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
 #include "element/reference_nodes.h"
 #include "quality/bezier_triangle.h"
+#include "quality/order_tables.h"
 
 namespace homesh {
 namespace {
@@ -65,13 +63,6 @@ struct JacobianTables {
   std::vector<ProductTerm> product;
 };
 
-const JacobianTables& jacobian_tables(int p) {
-  static std::array<std::once_flag, kMaxBezierJacobianOrder + 1> once;
-  static std::array<std::unique_ptr<const JacobianTables>, kMaxBezierJacobianOrder + 1> tables;
-  std::call_once(once[p], [p] { tables[p] = std::make_unique<const JacobianTables>(p); });
-  return *tables[p];
-}
-
 void check_order(const char* who, int p) {
   if (p < 1 || p > kMaxBezierJacobianOrder) {
     throw Error(std::string(who) + ": order " + std::to_string(p) + " not in [1, " +
@@ -93,7 +84,7 @@ void jacobian_control_points(const Eigen::Matrix2Xd& X, int p, Eigen::Ref<Eigen:
     throw Error("jacobian_control_points: order " + std::to_string(p) + " needs " +
                 std::to_string(m) + " control points per derivative");
   }
-  const JacobianTables& t = jacobian_tables(p);
+  const JacobianTables& t = order_tables<JacobianTables>(p);
   // b = X * transpose(to_bezier), one node (column of to_bezier) at a time.
   double bx[kMaxBezierJacobianNodes] = {}, by[kMaxBezierJacobianNodes] = {};
   for (int i = 0; i < n; ++i) {
@@ -120,7 +111,7 @@ void jacobian_determinant_bezier(const Eigen::Ref<const Eigen::Matrix2Xd>& U,
       c.size() != bezier_size(2 * (p - 1))) {
     throw Error("jacobian_determinant_bezier: sizes do not match order " + std::to_string(p));
   }
-  const JacobianTables& t = jacobian_tables(p);
+  const JacobianTables& t = order_tables<JacobianTables>(p);
   c.setZero();
   for (const ProductTerm& term : t.product) {
     c(term.g) += term.w * (U(0, term.a) * V(1, term.b) - V(0, term.a) * U(1, term.b));

@@ -1,8 +1,5 @@
 #include "quality/quad_bezier_jacobian.h"
 
-#include <array>
-#include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -10,6 +7,7 @@
 #include "core/mesh.h"
 #include "element/quad_reference_nodes.h"
 #include "quality/bezier_quad.h"
+#include "quality/order_tables.h"
 
 namespace homesh {
 namespace {
@@ -50,13 +48,6 @@ struct QuadJacobianTables {
   std::vector<ProductTerm> product;
 };
 
-const QuadJacobianTables& tables(int p) {
-  static std::array<std::once_flag, kMaxBezierJacobianOrder + 1> once;
-  static std::array<std::unique_ptr<const QuadJacobianTables>, kMaxBezierJacobianOrder + 1> t;
-  std::call_once(once[p], [p] { t[p] = std::make_unique<const QuadJacobianTables>(p); });
-  return *t[p];
-}
-
 }  // namespace
 
 Eigen::VectorXd quad_jacobian_determinant_bezier(const Eigen::Matrix2Xd& X, int p) {
@@ -67,7 +58,7 @@ Eigen::VectorXd quad_jacobian_determinant_bezier(const Eigen::Matrix2Xd& X, int 
     throw Error("quad_jacobian_determinant_bezier: an order " + std::to_string(p) +
                 " quadrilateral has " + std::to_string(quad_node_count(p)) + " nodes, got " +
                 std::to_string(X.cols()));
-  const QuadJacobianTables& t = tables(p);
+  const QuadJacobianTables& t = order_tables<QuadJacobianTables>(p);
   // Control points b = T G T^T per coordinate, G the nodes on their (i, j) grid.
   Eigen::MatrixXd bx(p + 1, p + 1), by(p + 1, p + 1);
   for (Eigen::Index k = 0; k < X.cols(); ++k) {
