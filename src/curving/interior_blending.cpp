@@ -1,6 +1,7 @@
 #include "curving/interior_blending.h"
 
 #include "element/line_interpolation.h"
+#include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
 
 namespace homesh {
@@ -37,8 +38,40 @@ Eigen::Matrix2Xd blend_interior(const Eigen::Matrix2Xd& X, int p) {
   return out;
 }
 
+// Gordon & Hall 1973: the Coons patch of the four edges, linear blending.
+Eigen::Matrix2Xd blend_quad_interior(const Eigen::Matrix2Xd& X, int p) {
+  Eigen::Matrix2Xd out = X;
+  if (p < 2) return out;
+  const Eigen::Matrix2Xd uv = quad_reference_nodes(p);
+  Eigen::VectorXd t(p + 1);
+  for (int j = 0; j <= p; ++j) t(j) = j * (1.0 / p);
+  // d[k]: the deviation of edge k from its chord at t, 0 at both corners.
+  Eigen::Matrix2Xd d[4];
+  for (int k = 0; k < 4; ++k) {
+    d[k] = Eigen::Matrix2Xd::Zero(2, p + 1);
+    const Eigen::Vector2d xa = X.col(k), xb = X.col((k + 1) % 4);
+    for (int j = 1; j < p; ++j)
+      d[k].col(j) = X.col(4 + k * (p - 1) + j - 1) - ((1 - t(j)) * xa + t(j) * xb);
+  }
+  for (Eigen::Index i = 4 * p; i < uv.cols(); ++i) {
+    const double u = uv(0, i), v = uv(1, i);
+    out.col(i) = (1 - u) * (1 - v) * X.col(0) + u * (1 - v) * X.col(1) + u * v * X.col(2) +
+                 (1 - u) * v * X.col(3) + (1 - v) * interpolate_on_line(t, d[0], u) +
+                 u * interpolate_on_line(t, d[1], v) + v * interpolate_on_line(t, d[2], 1 - u) +
+                 (1 - u) * interpolate_on_line(t, d[3], 1 - v);
+  }
+  return out;
+}
+
 void blend_interiors(Mesh& m, const std::vector<bool>& moved) {
   const int p = m.order;
+  for (int e = 0; e < m.num_quads() && p >= 2; ++e) {
+    bool touched = false;
+    for (int k = 4; k < 4 * p && !touched; ++k) touched = moved[m.quad(k, e)];
+    if (!touched) continue;
+    const Eigen::Matrix2Xd X = blend_quad_interior(m.quad_nodes(e), p);
+    for (Eigen::Index k = 4 * p; k < m.quad.rows(); ++k) m.x.col(m.quad(k, e)) = X.col(k);
+  }
   if (p < 3) return;
   for (int e = 0; e < m.num_triangles(); ++e) {
     bool touched = false;

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "element/jacobian.h"
 #include "element/lagrange_basis.h"
+#include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
 
 using namespace homesh;
@@ -189,4 +190,64 @@ TEST_CASE("raise_order rejects orders outside 1..10", "[core][raise_order]") {
   CHECK_NOTHROW(raise_order(m, 10));
   CHECK_THROWS_AS(raise_order(m, 0), Error);
   CHECK_THROWS_WITH(raise_order(m, 11), Catch::Contains("order 11"));
+}
+
+TEST_CASE("raise_order raises quadrilaterals beside triangles, sharing their edge nodes",
+          "[core][raise_order][quad]") {
+  // A quadrilateral 0 1 2 3 (a trapezium, so the bilinear map is not affine) and a
+  // triangle 1 4 2 on its edge 1-2; lines 0-1 (curve 1, u from 0 to 1) and 4-2.
+  Mesh m;
+  m.order = 1;
+  m.x.resize(2, 5);
+  m.x << 0.0, 1.0, 0.8, 0.0, 2.0,  //
+      0.0, 0.0, 1.0, 1.0, 0.5;
+  m.node_class = {{0, 1, 0.0}, {0, 2, 1.0}, {2, 7}, {2, 7}, {2, 7}};
+  m.tri.resize(3, 1);
+  m.tri << 1, 4, 2;
+  m.tri_entity = {7};
+  m.quad.resize(4, 1);
+  m.quad << 0, 1, 2, 3;
+  m.quad_entity = {7};
+  m.line.resize(2, 2);
+  m.line << 0, 4,  //
+      1, 2;
+  m.line_entity = {1, 2};
+  m.entities = {{1, 1, {}}, {1, 2, {}}, {2, 7, {1, 2}}};
+  for (int p = 1; p <= 6; ++p) {
+    INFO("p = " << p);
+    const Mesh r = raise_order(m, p);
+    // V + (p-1) E + (p-1)(p-2)/2 T + (p-1)^2 Q with V = 5, E = 6 (4 quad edges, 2 more).
+    CHECK(r.num_nodes() == 5 + (p - 1) * 6 + (p - 1) * (p - 2) / 2 + (p - 1) * (p - 1));
+    REQUIRE(r.quad.rows() == quad_node_count(p));
+    CHECK(r.quad_entity == m.quad_entity);
+    CHECK(r.quad.topRows(4) == m.quad);
+    // Quad edge 1-2 (its edge k = 1, walked 1 -> 2) is the triangle's edge 2-0
+    // (walked 2 -> 1): the same nodes, reversed.
+    const Eigen::VectorXi quad_edge = r.quad.block(4 + (p - 1), 0, p - 1, 1);
+    const Eigen::VectorXi tri_edge = r.tri.block(3 + 2 * (p - 1), 0, p - 1, 1);
+    CHECK(quad_edge == tri_edge.reverse());
+    // Line 0-1 is quad edge 0, with its curve parameter interpolated.
+    CHECK(r.line.col(0).tail(p - 1) == r.quad.block(4, 0, p - 1, 1));
+    for (int i = 2; i <= p; ++i) {
+      CHECK(r.node_class[r.line(i, 0)].dim == 1);
+      CHECK(r.node_class[r.line(i, 0)].u == Approx(r.x(0, r.line(i, 0))).margin(1e-15));
+    }
+    // Every quad node sits at the bilinear image of its reference node.
+    const Eigen::Matrix2Xd uv = quad_reference_nodes(p);
+    for (int k = 0; k < quad_node_count(p); ++k) {
+      const double u = uv(0, k), v = uv(1, k);
+      const Eigen::Vector2d expected = (1 - u) * (1 - v) * m.x.col(0) + u * (1 - v) * m.x.col(1) +
+                                       u * v * m.x.col(2) + (1 - u) * v * m.x.col(3);
+      CHECK((r.x.col(r.quad(k, 0)) - expected).norm() < 1e-14);
+      if (k >= 4) CHECK(r.node_class[r.quad(k, 0)].dim >= 1);
+    }
+    // Every node is used once at least, by the quad, the triangle or a line.
+    std::set<int> used(r.tri.data(), r.tri.data() + r.tri.size());
+    used.insert(r.quad.data(), r.quad.data() + r.quad.size());
+    CHECK(static_cast<int>(used.size()) == r.num_nodes());
+  }
+  // Raised back to p = 1 from p = 4, only the corners remain.
+  const Mesh back = raise_order(raise_order(m, 4), 1);
+  CHECK(back.num_nodes() == 5);
+  CHECK(back.quad == m.quad);
 }
