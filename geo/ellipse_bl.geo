@@ -1,5 +1,6 @@
 // A 10:1 ellipse (semi-axes 0.5, 0.05; nose radius 0.005) in a box, meshed with Gmsh's own
-// BoundaryLayer field (first cell 1e-4, ratio 1.2, triangles): a mesh homesh did not make,
+// BoundaryLayer field (first cell 1e-4, ratio 1.2, triangles; quadrilaterals with Quads = 1,
+// as ellipse_bl_quads.geo sets it): a mesh homesh did not make,
 // whose 0.015 wall edges turn 90 degrees round the nose (issue 16's ellipse10_bl_1e-4).
 SetFactory("OpenCASCADE");
 DefineConstant[
@@ -7,7 +8,8 @@ DefineConstant[
   Ratio = {1.2, Name "Layers/Ratio"},
   Thickness = {0.004, Name "Layers/Thickness"},
   LcWall = {0.015, Name "Mesh size/LcWall"},
-  LcFar = {0.3, Name "Mesh size/LcFar"}
+  LcFar = {0.3, Name "Mesh size/LcFar"},
+  Quads = {0, Choices{0, 1}, Name "Layers/Quads", Label "Quadrilaterals in the layers"}
 ];
 Rectangle(1) = {-1, -0.75, 0, 2.5, 1.5};
 Disk(2) = {0.5, 0, 0, 0.5, 0.05};
@@ -38,5 +40,5 @@ Field[3].CurvesList = {wall[#wall[] - 1]};
 Field[3].Size = First;
 Field[3].Ratio = Ratio;
 Field[3].Thickness = Thickness;
-Field[3].Quads = 0;
+Field[3].Quads = Quads;
 BoundaryLayer Field = 3;

@@ -16,6 +16,11 @@ double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The node indices of 2D element e: triangle e, else quadrilateral e - #triangles.
+Eigen::Ref<const Eigen::VectorXi> element_nodes(const Mesh& m, int e) {
+  return e < m.num_triangles() ? m.tri.col(e) : m.quad.col(e - m.num_triangles());
+}
+
 }  // namespace
 
 CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh& raised)>& place,
@@ -36,15 +41,16 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
         target.col(i) = raised.x.col(i);
       }
   }
-  // The elastic solve on `region` only: every node but those inside it (on none of the
-  // triangles outside) prescribed at step 1's guess, solved from the straight mesh to it.
+  // The elastic solve on `region` (2D elements) only: every node but those inside it (on
+  // none of the elements outside) prescribed at step 1's guess, solved from the straight
+  // mesh to it.
   auto solve_round = [&](const std::vector<int>& region) {
     std::vector<bool> outside(raised.num_nodes(), false);
-    std::vector<bool> in_region(raised.num_triangles(), false);
+    std::vector<bool> in_region(raised.num_elements_2d(), false);
     for (int e : region) in_region[e] = true;
-    for (int e = 0; e < raised.num_triangles(); ++e)
+    for (int e = 0; e < raised.num_elements_2d(); ++e)
       if (!in_region[e])
-        for (int k = 0; k < raised.tri.rows(); ++k) outside[raised.tri(k, e)] = true;
+        for (const int n : element_nodes(raised, e)) outside[n] = true;
     std::vector<bool> prescribed = held;
     for (int i = 0; i < raised.num_nodes(); ++i) prescribed[i] = prescribed[i] || outside[i];
     DeformOptions around = opt.deform;
@@ -54,9 +60,9 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   const bool rings = opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order;
   auto poor_region = [&](const MeshValidity& v, double bar) {
     std::vector<bool> poor_nodes(placed.num_nodes(), false);
-    for (int e = 0; e < placed.num_triangles(); ++e)
+    for (int e = 0; e < placed.num_elements_2d(); ++e)
       if (v.ratio(e) < bar)
-        for (int k = 0; k < placed.tri.rows(); ++k) poor_nodes[placed.tri(k, e)] = true;
+        for (const int n : element_nodes(placed, e)) poor_nodes[n] = true;
     return moving_region(placed, poor_nodes, opt.placed_rings);
   };
 
@@ -156,6 +162,16 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     r.deform = deform_mesh(raised, target, boundary, whole);
   }
   r.elastic_seconds = since(elastic);
+  // A solve that fell short of step 1's valid guess (incomplete, or complete on its region
+  // but poorer once put back: a local solve can break elements it was not posed on) gives
+  // way to the guess, which step 3 then optimises.
+  if (r.placed_worst > 0 && (!r.deform.complete || !(r.deform.worst_ratio >= r.placed_worst))) {
+    r.deform.mesh = std::move(placed);
+    r.deform.complete = true;
+    r.deform.reached = 1;
+    r.deform.worst_ratio = r.placed_worst;
+    r.guess_over_solve = true;
+  }
   r.worst_ratio = r.deform.worst_ratio;
   if (!(opt.optimise && r.deform.complete && r.deform.worst_ratio < opt.optimiser.threshold)) {
     r.mesh = std::move(r.deform.mesh);
@@ -163,8 +179,11 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     return r;
   }
 
-  // 3. Optimised, where the elastic result is valid and leaves poor elements.
-  const std::vector<bool> none(raised.num_nodes(), false);
+  // 3. Optimised, where the elastic result is valid and leaves poor elements. The
+  // optimiser moves triangles' nodes only: the quadrilaterals' are held.
+  std::vector<bool> none(raised.num_nodes(), false);
+  for (int q = 0; q < raised.num_quads(); ++q)
+    for (const int n : raised.quad.col(q)) none[n] = true;
   // Passes of the optimiser from the current solve, each from where the last stopped, while
   // elements stay below the threshold and a pass still lifts the worst by kPassGain.
   auto optimise = [&] {
@@ -195,7 +214,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     const auto t = std::chrono::steady_clock::now();
     DeformResult freed = deform_mesh(raised, target, boundary, opt.deform);
     r.elastic_seconds += since(t);
-    if (freed.complete) {
+    if (freed.complete && freed.worst_ratio > 0) {
       DeformResult held_result = std::move(r.deform);
       r.deform = std::move(freed);
       OptimiseResult o = optimise();

@@ -12,7 +12,8 @@
 //    are (boundary-layer heights kept exactly) and only the nodes the order
 //    raising added move; if that solve, or one restricted by deform.layers or
 //    deform.reach, cannot reach the whole motion, the whole mesh is solved
-//    again with every interior node free (the thesis' setting).
+//    again with every interior node free (the thesis' setting). A valid guess
+//    of step 1 that the solves do not beat (or that they break) is kept.
 // 3. Optimised: if `optimise` and elements are left below
 //    optimiser.threshold, the high-order optimiser (optimise_mesh.h) works on
 //    patches round them, boundary nodes sliding along the curves `curves`
@@ -107,15 +108,18 @@ struct CurveResult {
   std::string guess = "straight";  ///< step 1's guess kept: straight, blended or propagated
   double placed_worst = 0;         ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
   DeformResult deform;             ///< of the last solve (if any)
-  bool fell_back = false;          ///< the restricted solve fell short: solved with vertices free
-  bool fell_back_whole = false;    ///< and that on the whole mesh (the region's fell short too)
-  double restricted_reached = 0;   ///< the restricted solve's reached fraction, if it fell back
-  bool freed_vertices = false;     ///< the result comes from step 3's solve with vertices free
-  bool optimised = false;          ///< step 3 ran
-  OptimiseResult optimisation;     ///< its result (its mesh moved to `mesh`)
-  double seconds = 0;              ///< wall time of the whole curving
-  double elastic_seconds = 0;      ///< of which the elastic solves
-  double optimise_seconds = 0;     ///< and the optimiser
+  /// The solves fell short of step 1's valid guess (incomplete, or poorer): the guess
+  /// went on to step 3 instead (deform.mesh is the guess).
+  bool guess_over_solve = false;
+  bool fell_back = false;         ///< the restricted solve fell short: solved with vertices free
+  bool fell_back_whole = false;   ///< and that on the whole mesh (the region's fell short too)
+  double restricted_reached = 0;  ///< the restricted solve's reached fraction, if it fell back
+  bool freed_vertices = false;    ///< the result comes from step 3's solve with vertices free
+  bool optimised = false;         ///< step 3 ran
+  OptimiseResult optimisation;    ///< its result (its mesh moved to `mesh`)
+  double seconds = 0;             ///< wall time of the whole curving
+  double elastic_seconds = 0;     ///< of which the elastic solves
+  double optimise_seconds = 0;    ///< and the optimiser
 };
 
 /// m at order opt.order with its boundary nodes at place(raised) (2 by nodes

@@ -75,7 +75,7 @@ std::tuple<int, int, double> curve_log(const std::string& output) {
   std::smatch m;
   REQUIRE(std::regex_search(
       output, m,
-      std::regex(R"(curve: .* posed on (\d+) of (\d+) triangles: .* worst minJ/maxJ (\d\.\d+))")));
+      std::regex(R"(curve: .* posed on (\d+) of (\d+) elements: .* worst minJ/maxJ (\d\.\d+))")));
   return {std::stoi(m[1]), std::stoi(m[2]), std::stod(m[3])};
 }
 }  // namespace
@@ -165,7 +165,7 @@ TEST_CASE("curve: boundary layers follow the wall as a first guess, polished rou
   REQUIRE(std::regex_search(
       r.output, m,
       std::regex(R"(interior propagated: worst minJ/maxJ (\d\.\d+); solved round its elements )"
-                 R"(below 0\.98 \((\d+) triangles\): worst minJ/maxJ (\d\.\d+))")));
+                 R"(below 0\.98 \((\d+) elements\): worst minJ/maxJ (\d\.\d+))")));
   const double guess = std::stod(m[1]), polished = std::stod(m[3]);
   CHECK(guess > 0.95);           // measured 0.9622
   CHECK(polished > 0.98);        // measured 0.9842
@@ -255,7 +255,7 @@ TEST_CASE("curve: the optimiser lifts a Gmsh boundary layer, wall nodes sliding 
     return std::stod(m[1]);
   };
   const std::string held_solve =
-      geo + "ellipse_bl.geo -m mesh -m curve:p=2:optimise=off -m optimise:vertices=free";
+      geo + "ellipse_bl.geo -m mesh -m curve:p=2:optimise=off:placed=2 -m optimise:vertices=free";
   auto r = run_homesh(held_solve + ":slide=none -m quality");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
@@ -290,4 +290,36 @@ TEST_CASE("curve: the optimiser lifts a Gmsh boundary layer, wall nodes sliding 
     }
   CHECK(on_wall > 300);
   CHECK(off < 1e-10);
+}
+
+TEST_CASE("curve: Gmsh's quadrilateral boundary layer, mixed with triangles, curved valid",
+          "[app][quads]") {
+  // ellipse_bl_quads.geo: Gmsh's BoundaryLayer field with Quads = 1 (1632 quadrilaterals, first
+  // cell 1e-4, round a nose of radius 0.005) and 1621 triangles. Gmsh 4.8.4 leaves 12 elements
+  // invalid after setOrder(3), 28 after HighOrderElastic and FastCurving does not take quads.
+  const TempDir dir;
+  const std::string out = dir / "ellipse_quads.msh";
+  const auto r = run_homesh(geo + "ellipse_bl_quads.geo -m mesh -m curve:p=3 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(
+      r.output, m,
+      std::regex(R"(validity: 0 invalid of (\d+) triangles and (\d+) quadrilaterals.*)"
+                 R"(worst minJ/maxJ (\d\.\d+))")));
+  CHECK(std::stoi(m[2]) > 1000);
+  CHECK(std::stod(m[3]) > 0.5);  // measured 0.6254
+  // Gmsh's own plugin on the written file agrees: every element valid.
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  std::vector<int> views;  // homesh's own validity view, written with every mesh
+  gmsh::view::getTags(views);
+  for (int v : views) gmsh::view::remove(v);
+  std::vector<std::size_t> tags;
+  std::vector<std::vector<double>> data;
+  REQUIRE(homesh::test::analyse_mesh_quality(tags, data));
+  REQUIRE(tags.size() == std::stoul(m[1]) + std::stoul(m[2]));
+  double worst = 1;
+  for (const auto& d : data) worst = std::min(worst, d[0]);
+  CHECK(worst > 0.5);
 }

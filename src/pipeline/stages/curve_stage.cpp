@@ -75,13 +75,13 @@ void run(Context& ctx, const CurveOptions& o) {
   if (!c.placed && !r.complete)
     throw Error(fmt::format(
         "stage 'curve': the elastic analogy ({}) kept the mesh valid only up to {:.1f} % of "
-        "the boundary motion ({} triangles would become invalid); try more increments or "
+        "the boundary motion ({} elements would become invalid); try more increments or "
         "another formulation",
         d.formulation, 100 * r.reached, r.invalid_at_failure));
   if (c.polished)
     ctx.log.info(
         "curve: order {}, boundary nodes placed, interior {}: {}; solved round its elements "
-        "below {:g}{} ({} triangles): worst minJ/maxJ {:.4f}, {:.2f} s",
+        "below {:g}{} ({} elements): worst minJ/maxJ {:.4f}, {:.2f} s",
         o.order, c.guess,
         c.placed_worst > 0 ? fmt::format("worst minJ/maxJ {:.4f}", c.placed_worst)
                            : std::string("not certified valid"),
@@ -101,10 +101,15 @@ void run(Context& ctx, const CurveOptions& o) {
         o.order, c.guess, c.worst_ratio, o.accept_placed);
   else if (!c.polished)
     ctx.log.info(
-        "curve: order {}, formulation {}, nu {}, posed on {} of {} triangles: {} solves, worst "
+        "curve: order {}, formulation {}, nu {}, posed on {} of {} elements: {} solves, worst "
         "minJ/maxJ {:.4f}, {:.2f} s",
-        o.order, d.formulation, d.params.poisson, r.solved_triangles, m.num_triangles(), r.solves,
+        o.order, d.formulation, d.params.poisson, r.solved_triangles, m.num_elements_2d(), r.solves,
         r.worst_ratio, c.elastic_seconds);
+  if (c.guess_over_solve)
+    ctx.log.info(
+        "curve: the solve fell short of the {} guess (worst minJ/maxJ {:.4f}): the guess is "
+        "kept",
+        c.guess, c.placed_worst);
   if (c.optimised) {
     const OptimiseResult& op = c.optimisation;
     ctx.log.info(
@@ -119,6 +124,7 @@ void run(Context& ctx, const CurveOptions& o) {
   ctx.results["worst"] = c.worst_ratio;
   ctx.results["placed"] = c.placed;
   ctx.results["polished"] = c.polished;
+  ctx.results["guess_over_solve"] = c.guess_over_solve;
   ctx.results["optimised"] = c.optimised;
   ctx.results["seconds"] = c.seconds;
   m = std::move(c.mesh);
@@ -186,7 +192,7 @@ Stage curve_stage() {
       "interior blended from the curved edges if that is good enough, else by the elastic "
       "analogy (first round the poor elements only), then the "
       "optimiser round the elements left poor (wall nodes sliding on the CAD), valid",
-      t, run);
+      t, run, /*creates_mesh=*/false, /*handles_quads=*/true);
 }
 
 }  // namespace homesh

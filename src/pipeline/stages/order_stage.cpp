@@ -9,7 +9,8 @@ void run(Context& ctx, const OrderOptions& o) {
   Mesh& m = ctx.require_mesh("order");
   m = raise_order(m, o.order);
   ctx.fields.clear();
-  ctx.log.info("order: p = {}, {} nodes, {} triangles", o.order, m.num_nodes(), m.num_triangles());
+  ctx.log.info("order: p = {}, {} nodes, {} triangles, {} quadrilaterals", o.order, m.num_nodes(),
+               m.num_triangles(), m.num_quads());
 }
 
 }  // namespace
@@ -19,7 +20,8 @@ Stage order_stage() {
   t.add("p", &OrderOptions::order, integer(1, kMaxOrder),
         "element order, 1 to " + std::to_string(kMaxOrder));
   return make_stage<OrderOptions>(
-      "order", "raise (or lower) the mesh to order p with straight-sided elements", t, run);
+      "order", "raise (or lower) the mesh to order p with straight-sided elements", t, run,
+      /*creates_mesh=*/false, /*handles_quads=*/true);
 }
 
 }  // namespace homesh
