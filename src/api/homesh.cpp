@@ -48,8 +48,8 @@ Validity summary(const Mesh& m, const MeshValidity& v, const std::vector<std::si
   const std::size_t worst = v.worst_element < 0 ? 0
                             : tags.empty()      ? m.triangle_tag(v.worst_element)
                                                 : tags[static_cast<std::size_t>(v.worst_element)];
-  return {m.num_triangles(), v.invalid, v.worst, static_cast<int>(worst),
-          validity_line(m, v, worst)};
+  return {m.num_triangles(), m.num_quads(),           v.invalid,
+          v.worst,           static_cast<int>(worst), validity_line(m, v, worst)};
 }
 
 Validity summary(const Mesh& m, const std::vector<std::size_t>& tags = {}) {
@@ -109,6 +109,7 @@ Result run(const std::string& name, const StageOptions& options) {
     r.order = ctx.mesh->order;
     r.nodes = ctx.mesh->num_nodes();
     r.triangles = ctx.mesh->num_triangles();
+    r.quadrilaterals = ctx.mesh->num_quads();
     r.validity = summary(*ctx.mesh);
     return r;
   });

@@ -38,9 +38,10 @@ using ResultValue = std::variant<bool, int, double>;
 /// determinant; quality/mesh_validity.h).
 struct Validity {
   int triangles = 0;
-  int invalid = 0;         ///< triangles not certified valid
+  int quadrilaterals = 0;
+  int invalid = 0;         ///< 2D elements (triangles and quadrilaterals) not certified valid
   double worst = 1;        ///< smallest certified minJ/maxJ, in [-1, 1]
-  int worst_triangle = 0;  ///< the Gmsh element tag of the triangle of `worst`
+  int worst_triangle = 0;  ///< the Gmsh element tag of the 2D element of `worst` (a quad too)
   std::string line;        ///< the CLI's one-line summary ("validity: ...")
 };
 
@@ -55,6 +56,7 @@ struct Result {
   int order = 0;          ///< element order of that mesh
   int nodes = 0;
   int triangles = 0;
+  int quadrilaterals = 0;
   std::vector<int> views;  ///< tags of the Gmsh views the stage added
   Validity validity;       ///< of the mesh after the stage (if has_mesh)
 };

@@ -193,3 +193,23 @@ def test_stages_list_every_option_with_its_default(session):
     assert stages["layers"]["walls"][0] == ""
     assert "physical group number" in stages["layers"]["walls"][1]
     assert "physical group number" in stages["rotate"]["wall"][1]
+
+
+def test_a_mixed_mesh_is_curved_and_counted_quadrilaterals_included(session):
+    # Gmsh's quadrilateral boundary layer round the ellipse, triangles outside (issue 21).
+    gmsh.open(os.path.join(GEO, "ellipse_bl_quads.geo"))
+    gmsh.model.mesh.generate(2)
+    quads = sum(len(t) for t in gmsh.model.mesh.getElementsByType(3)[:1])
+    tris = len(gmsh.model.mesh.getElementsByType(2)[0])
+    assert quads > 1000 and tris > 1000
+    r = homesh.curve(p=2)
+    assert r["quadrilaterals"] == quads and r["triangles"] == tris
+    v = r["validity"]
+    assert v["quadrilaterals"] == quads and v["invalid"] == 0 and v["worst"] > 0.5
+    # The worst element is a 9-node quadrilateral of the model (Gmsh type 10).
+    assert v["worst_element"] == v["worst_triangle"]
+    assert gmsh.model.mesh.getElement(v["worst_element"])[0] == 10
+    assert len(gmsh.model.mesh.getElementsByType(10)[0]) == quads
+    q = homesh.quality(measures="Q4")
+    assert q["results"]["quadrilaterals"] == quads and q["results"]["invalid"] == 0
+    assert q["results"]["worst_element"] == v["worst_element"]

@@ -59,6 +59,7 @@ void run(Context& ctx, const QualityOptions& o) {
                  {"quadrilaterals", m.num_quads()},
                  {"invalid", v.invalid},
                  {"worst", v.worst},
+                 {"worst_element", static_cast<int>(m.triangle_tag(v.worst_element))},
                  {"worst_triangle", static_cast<int>(m.triangle_tag(v.worst_element))}};
   std::vector<std::string> histograms = {histogram_line("minJ/maxJ", v.ratio)};
   for (std::size_t j = 0; j < chosen.size(); ++j) {
