@@ -185,6 +185,8 @@ std::vector<int> drop_unused_nodes(Mesh& m) {
   std::vector<bool> used(count, false);
   for (int e = 0; e < m.num_triangles(); ++e)
     for (int i = 0; i < m.tri.rows(); ++i) used[m.tri(i, e)] = true;
+  for (int e = 0; e < m.num_quads(); ++e)
+    for (int i = 0; i < m.quad.rows(); ++i) used[m.quad(i, e)] = true;
   for (int l = 0; l < m.num_lines(); ++l)
     for (int i = 0; i < m.line.rows(); ++i) used[m.line(i, l)] = true;
   for (int v : m.point_node) used[v] = true;
@@ -206,6 +208,8 @@ std::vector<int> drop_unused_nodes(Mesh& m) {
   m.node_class.resize(size);
   for (int e = 0; e < m.num_triangles(); ++e)
     for (int i = 0; i < m.tri.rows(); ++i) m.tri(i, e) = map[m.tri(i, e)];
+  for (int e = 0; e < m.num_quads(); ++e)
+    for (int i = 0; i < m.quad.rows(); ++i) m.quad(i, e) = map[m.quad(i, e)];
   for (int l = 0; l < m.num_lines(); ++l)
     for (int i = 0; i < m.line.rows(); ++i) m.line(i, l) = map[m.line(i, l)];
   for (int& v : m.point_node) v = map[v];

@@ -23,10 +23,12 @@ using layers_detail::number_text;
 using layers_detail::orient;
 using layers_detail::point_text;
 
-// New triangles with their surface and layer.
+// New triangles and quadrilaterals with their surface and layer.
 struct Triangles {
   std::vector<std::array<int, 3>> nodes;
   std::vector<int> entity, layer;
+  std::vector<std::array<int, 4>> quads;
+  std::vector<int> quad_entity, quad_layer;
 
   void add(const std::array<int, 3>& t, int surface, int k) {
     nodes.push_back(t);
@@ -45,10 +47,16 @@ double worst_ratio(const Eigen::Matrix2Xd& x, const std::array<int, 3>& a,
   return std::min(q(a), q(b));
 }
 
-// Quad p0 p1 p2 p3 (counter-clockwise) as two triangles: the diagonal with the
-// better worst radius ratio, a valid one if there is one.
+// Quad p0 p1 p2 p3 (counter-clockwise) as itself (`quads`) or as two triangles: the
+// diagonal with the better worst radius ratio, a valid one if there is one.
 void add_quad(const Eigen::Matrix2Xd& x, int p0, int p1, int p2, int p3, int surface, int k,
-              Triangles& out) {
+              bool quads, Triangles& out) {
+  if (quads) {
+    out.quads.push_back({p0, p1, p2, p3});
+    out.quad_entity.push_back(surface);
+    out.quad_layer.push_back(k);
+    return;
+  }
   const std::array<int, 3> a0{p0, p1, p2}, a1{p0, p2, p3}, b0{p0, p1, p3}, b1{p1, p2, p3};
   if (worst_ratio(x, a0, a1) >= worst_ratio(x, b0, b1)) {
     out.add(a0, surface, k);
@@ -263,14 +271,15 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
       const LayerLine& a = r.lines[first_line + start[i]];
       const LayerLine& b = r.lines[first_line + start[(i + 1) % size + 1] - 1];
       for (int k = 1; k <= n && i < loops[l].edges(); ++k)
-        add_quad(out.x, a.nodes[k - 1], b.nodes[k - 1], b.nodes[k], a.nodes[k], surface, k, added);
+        add_quad(out.x, a.nodes[k - 1], b.nodes[k - 1], b.nodes[k], a.nodes[k], surface, k,
+                 opt.quads, added);
       for (int j = start[i]; j + 1 < start[i + 1]; ++j) {
         const LayerLine& p = r.lines[first_line + j];
         const LayerLine& q = r.lines[first_line + j + 1];
         added.add({p.nodes[0], p.nodes[1], q.nodes[1]}, surface, 1);
         for (int k = 2; k <= n; ++k)
           add_quad(out.x, p.nodes[k - 1], p.nodes[k], q.nodes[k], q.nodes[k - 1], surface, k,
-                   added);
+                   opt.quads, added);
       }
     }
     first_line += start[size];
@@ -283,6 +292,12 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
   out.tri_entity.insert(out.tri_entity.end(), added.entity.begin(), added.entity.end());
   r.layer.assign(t0, 0);
   r.layer.insert(r.layer.end(), added.layer.begin(), added.layer.end());
+  const int q1 = static_cast<int>(added.quads.size());
+  out.quad.resize(4, q1);
+  for (int e = 0; e < q1; ++e)
+    for (int i = 0; i < 4; ++i) out.quad(i, e) = added.quads[e][i];
+  out.quad_entity = added.quad_entity;
+  r.layer.insert(r.layer.end(), added.quad_layer.begin(), added.quad_layer.end());
 
   const std::vector<int> renumber = drop_unused_nodes(out);
   for (LayerLine& line : r.lines) {
@@ -294,10 +309,9 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
   const MeshValidity v = mesh_validity(out);
   if (v.invalid > 0) {
     int e = 0;
-    while (v.min_det(e) > 0 && e + 1 < t1) ++e;
-    Eigen::Vector2d c = Eigen::Vector2d::Zero();
-    for (int i = 0; i < 3; ++i) c += out.x.col(out.tri(i, e)) / 3;
-    throw Error("layers: " + std::to_string(v.invalid) + " layer triangles would fold, e.g. in " +
+    while (v.min_det(e) > 0 && e + 1 < out.num_elements_2d()) ++e;
+    const Eigen::Vector2d c = out.corner_centroid(e);
+    throw Error("layers: " + std::to_string(v.invalid) + " layer elements would fold, e.g. in " +
                 "layer " + std::to_string(r.layer[e]) + " near " + point_text(c) +
                 " (neighbouring normals cross within the thickness " + number_text(d[n]) +
                 "); use fewer or thinner layers (n, first, ratio)");
@@ -310,10 +324,12 @@ std::vector<int> corner_triangles(const LayerResult& r, int wall_node) {
   for (const LayerLine& line : r.lines)
     if (line.wall_node == wall_node) nodes.insert(line.nodes.begin(), line.nodes.end());
   std::vector<int> tris;
-  for (int e = 0; e < r.mesh.num_triangles(); ++e) {
+  const int nt = r.mesh.num_triangles();
+  for (int e = 0; e < r.mesh.num_elements_2d(); ++e) {
     if (r.layer[e] == 0) continue;
-    for (int i = 0; i < 3; ++i)
-      if (nodes.count(r.mesh.tri(i, e))) {
+    const auto corners = e < nt ? r.mesh.tri.col(e).head(3) : r.mesh.quad.col(e - nt).head(4);
+    for (const int i : corners)
+      if (nodes.count(i)) {
         tris.push_back(e);
         break;
       }

@@ -14,13 +14,12 @@
 //
 // Elements: each wall edge gets n quads between the normal lines of its ends
 // (the outgoing-side normal of its first node, the incoming-side normal of its
-// second), two triangles each, the diagonal chosen for the better worst
-// radius ratio (Eq 4.17) among valid choices (the swap of Fig 4.5c). Between
-// consecutive normals of a fan: a triangle at the wall node, then n - 1 quads.
-// Triangle count: T - 2 c + 2 n E + 2 n (m - 1) per fan of m normals (the m - 1
-// gap triangles of the split included), E the number of wall edges, c the free
-// nodes removed from the room (clear_room.h); node count: V - c + n L, L the
-// number of normal lines.
+// second), kept as quadrilaterals with LayerOptions::quads, else two triangles each, the diagonal
+// chosen for the better worst radius ratio (Eq 4.17) among valid choices (the swap of Fig 4.5c).
+// Between consecutive normals of a fan: a triangle at the wall node, then n - 1 quads. Triangle
+// count: T - 2 c + 2 n E + 2 n (m - 1) per fan of m normals (the m - 1 gap triangles of the split
+// included), E the number of wall edges, c the free nodes removed from the room (clear_room.h);
+// node count: V - c + n L, L the number of normal lines.
 //
 // Where a normal meets another boundary closer than d_n / fill, the layers of
 // that line are thinned to fit (stack_fit.h) and the result lists where.
@@ -52,6 +51,9 @@ struct LayerOptions {
   /// Largest fraction of the distance along a normal to the nearest other
   /// boundary the stack may take; thinner layers there (stack_fit.h). In (0, 1].
   double fill = 0.4;
+  /// The layer cells as quadrilaterals (the wall triangle of each gap in a fan stays a
+  /// triangle), not split into two triangles each.
+  bool quads = false;
   NormalOptions normals;
   RoomOptions room;
 };
@@ -77,9 +79,9 @@ struct ThinnedLayers {
 
 struct LayerResult {
   Mesh mesh;
-  /// #triangles: 0 for the existing mesh (the input's T - 2 c triangles first,
-  /// with their surfaces, re-joined by the push's edge flips; the fans' gap
-  /// triangles next), k = 1..n for layer k from the wall.
+  /// #2D elements (triangles, then quadrilaterals: core/mesh.h): 0 for the existing
+  /// mesh (the input's T - 2 c triangles first, with their surfaces, re-joined by the
+  /// push's edge flips; the fans' gap triangles next), k = 1..n for layer k from the wall.
   std::vector<int> layer;
   std::vector<LayerLine> lines;
   int loops = 0;       ///< walls: closed loops and open chains
@@ -109,9 +111,9 @@ std::vector<double> layer_depths(double first, double ratio, int n);
 /// not even the first layer fits somewhere (stack_fit.h: checked before the room opens).
 LayerResult insert_layers(const Mesh& m, const LayerOptions& opt);
 
-/// The layer triangles (layer > 0) having a node on a normal line of
-/// `wall_node`: the elements of that corner, where single and multiple normals
-/// differ.
+/// The layer elements (layer > 0; 2D element indices) having a node on a normal
+/// line of `wall_node`: the elements of that corner, where single and multiple
+/// normals differ.
 std::vector<int> corner_triangles(const LayerResult& r, int wall_node);
 
 }  // namespace homesh

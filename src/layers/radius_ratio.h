@@ -18,7 +18,9 @@ namespace homesh {
 /// has zero length.
 double radius_ratio(const Eigen::Matrix<double, 2, 3>& X);
 
-/// #triangles Q of Eq 4.17 of every triangle of m, from its three corners.
+/// #2D elements: Q of Eq 4.17 of every triangle of m, from its three corners; of a
+/// quadrilateral (which Eq 4.17 does not define), the least Q of the four triangles
+/// of its corners, each corner with its two neighbours (0 if it is not convex).
 Eigen::VectorXd radius_ratios(const Mesh& m);
 
 }  // namespace homesh

@@ -41,7 +41,7 @@ LayerLog parse(const std::string& out) {
   l.before = std::stoi(m[1]);
   l.after = std::stoi(m[2]);
   REQUIRE(
-      std::regex_search(out, m, std::regex(R"(min Q (\d\.\d+) over its (\d+) layer triangles)")));
+      std::regex_search(out, m, std::regex(R"(min Q (\d\.\d+) over its (\d+) layer elements)")));
   l.corner_q = std::stod(m[1]);
   l.corner_triangles = std::stoi(m[2]);
   return l;
@@ -249,4 +249,44 @@ TEST_CASE("layers: NACA-7526 rotation - 5 normals at the trailing edge turn furt
   // the single-normal mesh much further than the plain analogy.
   const int area = naca_theta_max("", "formulation=heat_area:heat=0.01");
   CHECK(area >= 2 * single);
+}
+
+TEST_CASE("layers: cells=quads keeps each layer cell a quadrilateral, curved valid at p = 3",
+          "[app][quads]") {
+  // NACA-7526, 15 layers with a fan of 5 normals at the trailing edge: each wall edge's n
+  // cells, and n - 1 of each of the fan's 4 gaps, are quadrilaterals, whose two triangles
+  // they replace; the wall cell of each gap stays a triangle.
+  const std::string base =
+      geo +
+      "naca.geo -m mesh "
+      "-m layers:walls=aerofoil:n=15:first=1e-3:ratio=1.2:normals=multi:fan=5:fan_angle=320";
+  const auto tris = run_homesh(base);
+  REQUIRE(tris.exit_code == 0);
+  const TempDir dir;
+  const std::string out = dir / "naca_quads.msh";
+  const auto r = run_homesh(base + ":cells=quads -m curve:p=3 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(
+      r.output, m,
+      std::regex(R"((\d+) -> (\d+) triangles and (\d+) quadrilaterals, \d+ -> (\d+))")));
+  const int triangles = std::stoi(m[2]), quads = std::stoi(m[3]);
+  const LayerLog l = parse(tris.output);
+  CHECK(quads == 15 * l.wall_edges + (15 - 1) * (5 - 1));  // 1871
+  CHECK(triangles + 2 * quads == l.after);                 // 1797 + 2 x 1871 = 5539
+  REQUIRE(std::regex_search(tris.output, m, std::regex(R"(, \d+ -> (\d+) nodes)")));
+  CHECK(r.output.find(" -> " + std::string(m[1]) + " nodes") != std::string::npos);  // 2856
+  // Curved valid. The worst element is the linear mesh's own: the fan's trapezia in layer 2,
+  // sides d1 and d2 = 2.2 d1 along the normals, minJ/maxJ 1 / 2.2.
+  REQUIRE(std::regex_search(r.output, m,
+                            std::regex(R"(validity: 0 invalid of \d+ triangles and (\d+) )"
+                                       R"(quadrilaterals.*worst minJ/maxJ (\d\.\d+))")));
+  CHECK(std::stoi(m[1]) == quads);
+  CHECK(std::stod(m[2]) == Approx(1 / 2.2).margin(1e-3));
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 2);
+  CHECK(std::set<int>(types.begin(), types.end()) == std::set<int>{21, 36});  // P3 tri, P3 quad
 }

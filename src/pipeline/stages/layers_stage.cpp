@@ -25,8 +25,8 @@ void run(Context& ctx, const LayerOptions& o) {
   m = std::move(r.mesh);
 
   const Eigen::VectorXd q = radius_ratios(m);
-  Eigen::VectorXd layer(m.num_triangles());
-  for (int e = 0; e < m.num_triangles(); ++e) layer(e) = r.layer[e];
+  Eigen::VectorXd layer(m.num_elements_2d());
+  for (int e = 0; e < m.num_elements_2d(); ++e) layer(e) = r.layer[e];
   ctx.fields.clear();
   ctx.set_field({"homesh: radius ratio (Eq 4.17)", Field::Kind::Element, q.transpose()});
   ctx.set_field({"homesh: boundary layer", Field::Kind::Element, layer.transpose(), false});
@@ -57,12 +57,14 @@ void run(Context& ctx, const LayerOptions& o) {
   ctx.log.info(
       "layers: room opened in {} elastic step(s) (formulation {}, nu {:g}), {} free node(s) "
       "in the room removed, {} node move(s) smoothing squeezed triangles; {} -> {} "
-      "triangles, {} -> {} nodes",
+      "triangles{}, {} -> {} nodes",
       r.push_steps, o.room.formulation, o.room.params.poisson, r.cleared, r.smoothed, triangles,
-      m.num_triangles(), nodes, m.num_nodes());
+      m.num_triangles(),
+      m.num_quads() > 0 ? fmt::format(" and {} quadrilaterals", m.num_quads()) : std::string(),
+      nodes, m.num_nodes());
   double worst = 1, sum = 0, others = 1;
   int count = 0;
-  for (int e = 0; e < m.num_triangles(); ++e)
+  for (int e = 0; e < m.num_elements_2d(); ++e)
     if (r.layer[e] > 0) {
       worst = std::min(worst, q(e));
       sum += q(e);
@@ -71,9 +73,9 @@ void run(Context& ctx, const LayerOptions& o) {
       others = std::min(others, q(e));
     }
   ctx.log.info(
-      "layers: radius ratio Q (Eq 4.17) of the {} layer triangles: min {:.4f}, mean {:.4f}; "
-      "of the other triangles: min {:.4f}",
-      count, worst, sum / std::max(count, 1), others);
+      "layers: radius ratio Q (Eq 4.17; of a quadrilateral, its corner triangles' least) of the "
+      "{} layer {}: min {:.4f}, mean {:.4f}; of the other triangles: min {:.4f}",
+      count, m.num_quads() > 0 ? "elements" : "triangles", worst, sum / std::max(count, 1), others);
   double corner_worst = 1;
   for (int e : corner) corner_worst = std::min(corner_worst, q(e));
   const double degrees = r.sharpest_angle * 180 / M_PI;
@@ -82,7 +84,7 @@ void run(Context& ctx, const LayerOptions& o) {
   });
   ctx.log.info(
       "layers: at the sharpest wall node ({:.6g}, {:.6g}), {:.1f} deg ({}): min Q {:.4f} "
-      "over its {} layer triangles",
+      "over its {} layer elements",
       m.x(0, r.sharpest_node), m.x(1, r.sharpest_node), degrees,
       normals_there > 1 ? fmt::format("fan of {} normals", normals_there) : "single normal",
       corner_worst, corner.size());
@@ -111,6 +113,9 @@ Stage layers_stage() {
         "largest fraction of the distance along a normal to the nearest other boundary the "
         "stack may take: thinner layers where it would take more (gaps, slots, concave "
         "corners), with a warning");
+  t.add("cells", &LayerOptions::quads, choice<bool>({{"triangles", false}, {"quads", true}}),
+        "triangles | quads: the layer cells split into two triangles each, or kept as "
+        "quadrilaterals (a fan's cell at the wall stays a triangle)");
   t.add(
       "normals", [](LayerOptions& o) -> bool& { return o.normals.multi; },
       choice<bool>({{"single", false}, {"multi", true}}),
