@@ -15,7 +15,7 @@ by one of four meshers:
              Gmsh size field).
 
 The quad family (issue 21; listed only with `--family quads` or `all`, so the runs of the
-triangle corpus above are unchanged) is meshed by two more:
+triangle corpus above are unchanged) is meshed by three more:
 
   gmsh_bl_quads : as gmsh_bl with Quads = 1: quadrilaterals in the layers, triangles outside
                   and in the fans at sharp wall points (a mixed mesh);
@@ -25,6 +25,9 @@ triangle corpus above are unchanged) is meshed by two more:
                   for quads, Algorithm 8, crashes on these domains with their size field, and
                   RecombineAll with the layers' trailing-edge fans throws: the all-quad cases
                   are smooth bodies.)
+  gmsh_transfinite : a structured O-grid round a circle (transfinite, recombined), graded
+                  from the first cell at the wall: the all-quad case whose linear quads are
+                  good (recombined ones have a worst minJ/maxJ of about 0.2 already).
 
 Shapes: NACA 4- and 5-digit aerofoils (thin, thick, cambered, at incidence; closed sharp
 trailing edges, each surface a cubic B-spline with the exact leading-edge tangent), a main
@@ -260,8 +263,27 @@ def shape_plate_holes():
     return holes, (0, 0, 3, 2)
 
 
+def shape_ogrid(r=0.5, R=3.0):
+    """An annulus r < |x - (0.5, 0)| < R cut by four radial lines at 45, 135, 225 and 315
+    degrees into four four-sided patches (an O-grid for a transfinite mesh). Returns (surface
+    tags, wall curves: the inner arcs, farfield curves: the outer arcs)."""
+    occ = gmsh.model.occ
+    centre = occ.addPoint(0.5, 0, 0)
+    angles = [math.radians(45 + 90 * i) for i in range(4)]
+    inner = [occ.addPoint(0.5 + r * math.cos(a), r * math.sin(a), 0) for a in angles]
+    outer = [occ.addPoint(0.5 + R * math.cos(a), R * math.sin(a), 0) for a in angles]
+    walls = [occ.addCircleArc(inner[i], centre, inner[(i + 1) % 4]) for i in range(4)]
+    farfield = [occ.addCircleArc(outer[i], centre, outer[(i + 1) % 4]) for i in range(4)]
+    radial = [occ.addLine(inner[i], outer[i]) for i in range(4)]   # from the wall outwards
+    occ.remove([(0, centre)])
+    surfaces = [occ.addPlaneSurface([occ.addCurveLoop(
+        [walls[i], radial[(i + 1) % 4], farfield[i], radial[i]])]) for i in range(4)]
+    return surfaces, walls, farfield
+
+
 SHAPES = dict(aerofoil=shape_aerofoil, multi=shape_multi, ellipses=shape_ellipses,
-              star=shape_star, lshape=shape_lshape, plate_holes=shape_plate_holes)
+              star=shape_star, lshape=shape_lshape, plate_holes=shape_plate_holes,
+              ogrid=shape_ogrid)
 
 
 # ---------------------------------------------------------------- cases
@@ -272,6 +294,7 @@ class Case:
     shape: str
     args: dict
     mesher: str            # gmsh_bl | layers | none | voronoi | gmsh_bl_quads | gmsh_quads
+    #                        | gmsh_transfinite
     h_wall: float          # mesh size at the wall
     h_far: float = 0.3     # mesh size far from it
     first: float = 0.0     # first-cell height (0: no layers)
@@ -375,7 +398,7 @@ def _cases():
     return C
 
 
-QUAD_MESHERS = ("gmsh_bl_quads", "gmsh_quads")
+QUAD_MESHERS = ("gmsh_bl_quads", "gmsh_quads", "gmsh_transfinite")
 
 
 def _quad_cases():
@@ -409,6 +432,7 @@ def _quad_cases():
     add("circle_blq_1e-3_allquads", E, dict(centres=[(0.5, 0)], a=0.5), "gmsh_quads", 0.05,
         1e-3, 1.2)
     add("star1_blq_1e-3_allquads", "star", dict(seed=1), "gmsh_quads", 0.03, 1e-3, 1.2)
+    add("circle_ogrid_1e-3", "ogrid", {}, "gmsh_transfinite", 0.05, 1e-3, 1.15, total=2.5)
     return C
 
 
@@ -449,6 +473,9 @@ def _cad(c):
         occ.synchronize()
         boundary = [t for _, t in gmsh.model.getBoundary([(2, surface)], oriented=False)]
         return [surface], walls, [t for t in boundary if t not in walls]
+    if c.shape == "ogrid":
+        occ.synchronize()
+        return made
     bodies, domain = made
     fluid, _ = occ.cut([(2, box(*domain))], [(2, b) for b in bodies])
     occ.synchronize()
@@ -537,6 +564,25 @@ def _gmsh_bl(c, walls, quads=False):
     gmsh.model.mesh.generate(2)
 
 
+def _transfinite(c, surfaces, walls, farfield):
+    """A structured quad mesh of an O-grid (shape_ogrid): nodes about h_wall apart along the
+    wall arcs (as many on the outer arcs), c.n cells on every radial line in a geometric
+    progression of c.ratio from the wall; transfinite surfaces, recombined."""
+    m = gmsh.model.mesh
+    arc = gmsh.model.occ.getMass(1, walls[0])
+    n_arc = max(2, int(round(arc / c.h_wall)) + 1)
+    for t in walls + farfield:
+        m.setTransfiniteCurve(t, n_arc)
+    for _, t in gmsh.model.getBoundary([(2, s) for s in surfaces], combined=False,
+                                       oriented=False):
+        if abs(t) not in walls + farfield:
+            m.setTransfiniteCurve(abs(t), c.n + 1, "Progression", c.ratio)
+    for s in surfaces:
+        m.setTransfiniteSurface(s)
+        m.setRecombine(2, s)
+    m.generate(2)
+
+
 def build(c, quiet=True):
     """Recreate case c (a Case or its name) in the current Gmsh session: clear the model, make
     the CAD and the linear mesh. Returns the case's record (a dict, see `record`)."""
@@ -553,6 +599,8 @@ def build(c, quiet=True):
         _gmsh_bl(c, walls)
     elif c.mesher == "gmsh_bl_quads":
         _gmsh_bl(c, walls, quads=True)
+    elif c.mesher == "gmsh_transfinite":
+        _transfinite(c, surfaces, walls, farfield)
     elif c.mesher == "gmsh_quads":
         gmsh.option.setNumber("Mesh.Algorithm", 6)
         gmsh.option.setNumber("Mesh.RecombinationAlgorithm", 1)
