@@ -276,8 +276,9 @@ def shape_ogrid(r=0.5, R=3.0):
     farfield = [occ.addCircleArc(outer[i], centre, outer[(i + 1) % 4]) for i in range(4)]
     radial = [occ.addLine(inner[i], outer[i]) for i in range(4)]   # from the wall outwards
     occ.remove([(0, centre)])
+    # Each loop starts along its radial line outwards: counterclockwise, normal +z.
     surfaces = [occ.addPlaneSurface([occ.addCurveLoop(
-        [walls[i], radial[(i + 1) % 4], farfield[i], radial[i]])]) for i in range(4)]
+        [radial[i], farfield[i], radial[(i + 1) % 4], walls[i]])]) for i in range(4)]
     return surfaces, walls, farfield
 
 
