@@ -14,6 +14,21 @@ by one of four meshers:
   voronoi  : homesh's `voronoi` stage (crystal-growth Voronoi regions, sizes from the same
              Gmsh size field).
 
+The quad family (issue 21; listed only with `--family quads` or `all`, so the runs of the
+triangle corpus above are unchanged) is meshed by three more:
+
+  gmsh_bl_quads : as gmsh_bl with Quads = 1: quadrilaterals in the layers, triangles outside
+                  and in the fans at sharp wall points (a mixed mesh);
+  gmsh_quads    : Gmsh's Frontal-Delaunay (Mesh.Algorithm 6) with Mesh.RecombineAll = 1
+                  (Blossom, Mesh.RecombinationAlgorithm 1): all quadrilaterals, with a Quads = 1
+                  BoundaryLayer field where the case has layers. (Gmsh 4.8.4's Frontal-Delaunay
+                  for quads, Algorithm 8, crashes on these domains with their size field, and
+                  RecombineAll with the layers' trailing-edge fans throws: the all-quad cases
+                  are smooth bodies.)
+  gmsh_transfinite : a structured O-grid round a circle (transfinite, recombined), graded
+                  from the first cell at the wall: the all-quad case whose linear quads are
+                  good (recombined ones have a worst minJ/maxJ of about 0.2 already).
+
 Shapes: NACA 4- and 5-digit aerofoils (thin, thick, cambered, at incidence; closed sharp
 trailing edges, each surface a cubic B-spline with the exact leading-edge tangent), a main
 element with a flap and with slat + flap (small gaps, small nose radii), circles and ellipses
@@ -22,7 +37,8 @@ rounded re-entrant corner and a hole, a plate with holes. Wall sizes coarse and 
 cells 1e-3 .. 1e-5 of the chord. Every case has the physical curve group "wall" (what is
 curved and what layers grow from), "farfield" where it has one, and the surface "fluid".
 
-The record of a case (`build` returns it): triangles, other 2D elements (must be 0), wall
+The record of a case (`build` returns it): triangles, other 2D elements (must be 0; the quad
+family's records count the linear quadrangles apart, `quads`, and only the rest as other), wall
 edges, the requested and the measured first-cell height (over the wall nodes, the shortest
 mesh edge to a node off the wall), and the largest turning angle of consecutive linear wall
 edges, both over all wall nodes (`turn_all_deg`) and over the nodes where the CAD wall is
@@ -37,7 +53,7 @@ Library use (the benchmark does this before each method, in a fresh Gmsh session
 
 Command line (Debian's /usr/bin/python3, PYTHONPATH=build/python for homesh):
 
-    corpus.py [--list] [--cases PATTERN] [--out DIR]
+    corpus.py [--list] [--cases PATTERN] [--family default|quads|all] [--out DIR]
 
 writes DIR/NAME.msh (the linear mesh; see `write`) and DIR/NAME.brep
 (its CAD) per case, and DIR/corpus.csv (the records); default DIR out/bench/corpus/meshes.
@@ -247,8 +263,28 @@ def shape_plate_holes():
     return holes, (0, 0, 3, 2)
 
 
+def shape_ogrid(r=0.5, R=3.0):
+    """An annulus r < |x - (0.5, 0)| < R cut by four radial lines at 45, 135, 225 and 315
+    degrees into four four-sided patches (an O-grid for a transfinite mesh). Returns (surface
+    tags, wall curves: the inner arcs, farfield curves: the outer arcs)."""
+    occ = gmsh.model.occ
+    centre = occ.addPoint(0.5, 0, 0)
+    angles = [math.radians(45 + 90 * i) for i in range(4)]
+    inner = [occ.addPoint(0.5 + r * math.cos(a), r * math.sin(a), 0) for a in angles]
+    outer = [occ.addPoint(0.5 + R * math.cos(a), R * math.sin(a), 0) for a in angles]
+    walls = [occ.addCircleArc(inner[i], centre, inner[(i + 1) % 4]) for i in range(4)]
+    farfield = [occ.addCircleArc(outer[i], centre, outer[(i + 1) % 4]) for i in range(4)]
+    radial = [occ.addLine(inner[i], outer[i]) for i in range(4)]   # from the wall outwards
+    occ.remove([(0, centre)])
+    # Each loop starts along its radial line outwards: counterclockwise, normal +z.
+    surfaces = [occ.addPlaneSurface([occ.addCurveLoop(
+        [radial[i], farfield[i], radial[(i + 1) % 4], walls[i]])]) for i in range(4)]
+    return surfaces, walls, farfield
+
+
 SHAPES = dict(aerofoil=shape_aerofoil, multi=shape_multi, ellipses=shape_ellipses,
-              star=shape_star, lshape=shape_lshape, plate_holes=shape_plate_holes)
+              star=shape_star, lshape=shape_lshape, plate_holes=shape_plate_holes,
+              ogrid=shape_ogrid)
 
 
 # ---------------------------------------------------------------- cases
@@ -258,7 +294,8 @@ class Case:
     name: str
     shape: str
     args: dict
-    mesher: str            # gmsh_bl | layers | none | voronoi
+    mesher: str            # gmsh_bl | layers | none | voronoi | gmsh_bl_quads | gmsh_quads
+    #                        | gmsh_transfinite
     h_wall: float          # mesh size at the wall
     h_far: float = 0.3     # mesh size far from it
     first: float = 0.0     # first-cell height (0: no layers)
@@ -266,6 +303,11 @@ class Case:
     ratio: float = 1.2
     fan: int = 5           # fan elements at sharp points (gmsh_bl) / normals per fan (layers)
     tags: list = field(default_factory=list)
+
+    @property
+    def quads(self):
+        """Whether the case is of the quad family (its mesh may hold quadrangles)."""
+        return self.mesher in QUAD_MESHERS
 
     @property
     def thickness(self):
@@ -357,25 +399,67 @@ def _cases():
     return C
 
 
+QUAD_MESHERS = ("gmsh_bl_quads", "gmsh_quads", "gmsh_transfinite")
+
+
+def _quad_cases():
+    """The quad family (issue 21): Gmsh's quad boundary layers on a subset of the shapes
+    above (mixed meshes), and a few all-quad meshes."""
+    C = []
+
+    def add(name, shape, args, mesher, h_wall, first=0.0, ratio=1.2, total=None, **kw):
+        n = layers_for(first, ratio, total if total else h_wall) if first else 0
+        C.append(Case(name, shape, args, mesher, h_wall, first=first, n=n, ratio=ratio, **kw))
+
+    A, E, Q = "aerofoil", "ellipses", "gmsh_bl_quads"
+    row = dict(centres=[(x, y) for x in (0, 0.55, 1.1) for y in (-0.3, 0.3)], a=0.2,
+               domain=(-1.5, -1.5, 2.5, 1.5))
+    # Mixed: quads in the layers, triangles outside and in the trailing-edge fans.
+    add("naca0012_blq_1e-3_coarse", A, dict(code="0012"), Q, 0.04, 1e-3, 1.2)
+    add("naca0012_blq_1e-4_fine", A, dict(code="0012"), Q, 0.01, 1e-4, 1.2)
+    add("naca4412_a8_blq_1e-4", A, dict(code="4412", aoa=8), Q, 0.02, 1e-4, 1.2)
+    add("naca23012_blq_1e-5", A, dict(code="23012"), Q, 0.015, 1e-5, 1.3)
+    add("flap_gap02_blq_1e-4", "multi", dict(flap_gap=0.02), Q, 0.015, 1e-4, 1.2,
+        total=0.005)
+    add("circle_blq_1e-3_coarse", E, dict(centres=[(0.5, 0)], a=0.5), Q, 0.1, 1e-3, 1.3)
+    add("ellipse4_a10_blq_1e-4", E, dict(centres=[(0.5, 0)], a=0.5, b=0.125, turn=-10), Q,
+        0.02, 1e-4, 1.2)
+    add("circles6_blq_1e-3", E, row, Q, 0.03, 1e-3, 1.2, total=0.02)
+    add("star1_blq_1e-3", "star", dict(seed=1), Q, 0.03, 1e-3, 1.2)
+    add("star2_blq_1e-4_fine", "star", dict(seed=2, amplitude=0.35), Q, 0.01, 1e-4, 1.2)
+    add("plate_holes_blq_1e-4", "plate_holes", {}, Q, 0.02, 1e-4, 1.2)
+    # All quadrilaterals.
+    add("plate_holes_quads", "plate_holes", {}, "gmsh_quads", 0.05)
+    add("circle_blq_1e-3_allquads", E, dict(centres=[(0.5, 0)], a=0.5), "gmsh_quads", 0.05,
+        1e-3, 1.2)
+    add("star1_blq_1e-3_allquads", "star", dict(seed=1), "gmsh_quads", 0.03, 1e-3, 1.2)
+    add("circle_ogrid_1e-3", "ogrid", {}, "gmsh_transfinite", 0.05, 1e-3, 1.15, total=2.5)
+    return C
+
+
 CASES = _cases()
+QUAD_CASES = _quad_cases()
+FAMILIES = dict(default=CASES, quads=QUAD_CASES, all=CASES + QUAD_CASES)
 
 
 def case(name):
-    for c in CASES:
+    for c in CASES + QUAD_CASES:
         if c.name == name:
             return c
     raise KeyError(f"no corpus case '{name}'")
 
 
-def select(patterns=None):
-    """The cases whose names match any of the comma-separated shell patterns (substrings
-    match too), in the order of the patterns (all cases, in corpus order, if none)."""
+def select(patterns=None, family="default"):
+    """The cases of `family` (default: the triangle corpus; quads: the quad family; all)
+    whose names match any of the comma-separated shell patterns (substrings match too), in
+    the order of the patterns (all the family's cases, in corpus order, if none)."""
+    cases = FAMILIES[family]
     if not patterns:
-        return list(CASES)
+        return list(cases)
     pats = [p if any(ch in p for ch in "*?[") else f"*{p}*" for p in patterns.split(",")]
     chosen = []
     for p in pats:
-        chosen += [c for c in CASES if fnmatch.fnmatch(c.name, p) and c not in chosen]
+        chosen += [c for c in cases if fnmatch.fnmatch(c.name, p) and c not in chosen]
     return chosen
 
 
@@ -390,6 +474,9 @@ def _cad(c):
         occ.synchronize()
         boundary = [t for _, t in gmsh.model.getBoundary([(2, surface)], oriented=False)]
         return [surface], walls, [t for t in boundary if t not in walls]
+    if c.shape == "ogrid":
+        occ.synchronize()
+        return made
     bodies, domain = made
     fluid, _ = occ.cut([(2, box(*domain))], [(2, b) for b in bodies])
     occ.synchronize()
@@ -460,7 +547,8 @@ def _sizes(c, walls):
         gmsh.option.setNumber(name, value)
 
 
-def _gmsh_bl(c, walls):
+def _gmsh_bl(c, walls, quads=False):
+    """Gmsh's BoundaryLayer field on the walls (Quads = 1 with quads), then generate(2)."""
     f = gmsh.model.mesh.field
     b = f.add("BoundaryLayer")
     f.setNumbers(b, "CurvesList", walls)
@@ -468,13 +556,32 @@ def _gmsh_bl(c, walls):
     f.setNumber(b, "Ratio", c.ratio)
     # Gmsh adds layers while their total stays below Thickness: a hair above the n-th.
     f.setNumber(b, "Thickness", c.thickness * (1 + 1e-6))
-    f.setNumber(b, "Quads", 0)
+    f.setNumber(b, "Quads", 1 if quads else 0)
     fans = sharp_points(walls)
     if fans:
         f.setNumbers(b, "FanPointsList", fans)
         gmsh.option.setNumber("Mesh.BoundaryLayerFanElements", c.fan - 1)
     f.setAsBoundaryLayer(b)
     gmsh.model.mesh.generate(2)
+
+
+def _transfinite(c, surfaces, walls, farfield):
+    """A structured quad mesh of an O-grid (shape_ogrid): nodes about h_wall apart along the
+    wall arcs (as many on the outer arcs), c.n cells on every radial line in a geometric
+    progression of c.ratio from the wall; transfinite surfaces, recombined."""
+    m = gmsh.model.mesh
+    arc = gmsh.model.occ.getMass(1, walls[0])
+    n_arc = max(2, int(round(arc / c.h_wall)) + 1)
+    for t in walls + farfield:
+        m.setTransfiniteCurve(t, n_arc)
+    for _, t in gmsh.model.getBoundary([(2, s) for s in surfaces], combined=False,
+                                       oriented=False):
+        if abs(t) not in walls + farfield:
+            m.setTransfiniteCurve(abs(t), c.n + 1, "Progression", c.ratio)
+    for s in surfaces:
+        m.setTransfiniteSurface(s)
+        m.setRecombine(2, s)
+    m.generate(2)
 
 
 def build(c, quiet=True):
@@ -491,6 +598,18 @@ def build(c, quiet=True):
     _sizes(c, walls)
     if c.mesher == "gmsh_bl":
         _gmsh_bl(c, walls)
+    elif c.mesher == "gmsh_bl_quads":
+        _gmsh_bl(c, walls, quads=True)
+    elif c.mesher == "gmsh_transfinite":
+        _transfinite(c, surfaces, walls, farfield)
+    elif c.mesher == "gmsh_quads":
+        gmsh.option.setNumber("Mesh.Algorithm", 6)
+        gmsh.option.setNumber("Mesh.RecombinationAlgorithm", 1)
+        gmsh.option.setNumber("Mesh.RecombineAll", 1)
+        if c.n:
+            _gmsh_bl(c, walls, quads=True)
+        else:
+            gmsh.model.mesh.generate(2)
     elif c.mesher in ("layers", "none"):
         gmsh.model.mesh.generate(2)
         if c.mesher == "layers":
@@ -534,7 +653,8 @@ def write(c, path):
     every triangle invalid); without any, `load` gives what `build` does (checked: setOrder
     identical, homesh's curve within 1e-5)."""
     rec = build(c)
-    gmsh.option.setNumber("Mesh.SaveParametric", 1 if c.mesher in ("gmsh_bl", "none") else 0)
+    gmsh.option.setNumber("Mesh.SaveParametric",
+                          1 if c.mesher in ("gmsh_bl", "none") + QUAD_MESHERS else 0)
     gmsh.write(path)
     gmsh.write(os.path.splitext(path)[0] + ".brep")
     return rec
@@ -561,13 +681,16 @@ def wall_edges(walls):
 def record(c, walls):
     """Counts, the wall's turning angles and the first-cell height of the current model."""
     x = _coords()
-    triangles, others = 0, 0
-    tri = []
+    triangles, quads, others = 0, 0, 0
+    cells = []   # the linear elements' corner node tags, one array per element type
     for t, tags, nodes in zip(*gmsh.model.mesh.getElements(2)):
         name, _, order, k, _, _ = gmsh.model.mesh.getElementProperties(t)
         if name.startswith("Triangle") and order == 1:
             triangles += len(tags)
-            tri.append(np.asarray(nodes, dtype=int).reshape(-1, 3))
+            cells.append(np.asarray(nodes, dtype=int).reshape(-1, 3))
+        elif c.quads and name.startswith("Quadrilateral") and order == 1:
+            quads += len(tags)
+            cells.append(np.asarray(nodes, dtype=int).reshape(-1, 4))
         else:
             others += len(tags)
     edges = wall_edges(walls)
@@ -595,9 +718,9 @@ def record(c, walls):
     # First-cell height: over the wall nodes, the shortest mesh edge to a node off the wall.
     on_wall = set(incident)
     heights = {}
-    if tri:
-        T = np.vstack(tri)
-        for i, j in [(0, 1), (1, 2), (2, 0)]:
+    for T in cells:
+        k = T.shape[1]
+        for i, j in [(i, (i + 1) % k) for i in range(k)]:
             for a, b in zip(T[:, i].tolist(), T[:, j].tolist()):
                 for v, o in ((a, b), (b, a)):
                     if v in on_wall and o not in on_wall:
@@ -605,11 +728,16 @@ def record(c, walls):
                         if h < heights.get(v, math.inf):
                             heights[v] = h
     h = np.array(list(heights.values())) if heights else np.array([math.nan])
-    return dict(case=c.name, shape=c.shape, mesher=c.mesher, h_wall=c.h_wall, first=c.first,
-                layers=c.n, ratio=c.ratio if c.n else "", triangles=triangles, other_2d=others,
-                wall_edges=len(edges), first_min=float(h.min()), first_median=float(np.median(h)),
-                turn_deg=round(turn_smooth, 2), turn_all_deg=round(turn_all, 2),
-                target=0.9 if turn_smooth < 30 else 0.8)
+    rec = dict(case=c.name, shape=c.shape, mesher=c.mesher, h_wall=c.h_wall, first=c.first,
+               layers=c.n, ratio=c.ratio if c.n else "", triangles=triangles, other_2d=others,
+               wall_edges=len(edges), first_min=float(h.min()), first_median=float(np.median(h)),
+               turn_deg=round(turn_smooth, 2), turn_all_deg=round(turn_all, 2),
+               target=0.9 if turn_smooth < 30 else 0.8)
+    if c.quads:   # the quad family: its quads counted beside the triangles
+        rec = {k: v for key, value in rec.items()
+               for k, v in ([(key, value), ("quads", quads)] if key == "triangles"
+                            else [(key, value)])}
+    return rec
 
 
 # ---------------------------------------------------------------- command line
@@ -618,9 +746,11 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--list", action="store_true", help="list the cases and exit")
     ap.add_argument("--cases", help="comma-separated name patterns (substring or glob)")
+    ap.add_argument("--family", choices=sorted(FAMILIES), default="default",
+                    help="default: the triangle corpus; quads: the quad family (issue 21); all")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "bench", "corpus", "meshes"))
     args = ap.parse_args(argv)
-    cases = select(args.cases)
+    cases = select(args.cases, args.family)
     if args.list:
         for c in cases:
             print(f"{c.name:<30} {c.shape:<11} {c.mesher:<8} h_wall {c.h_wall:<6g} "
@@ -637,7 +767,8 @@ def main(argv=None):
         print(" ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}"
                        for k, v in rec.items()), flush=True)
     with open(os.path.join(args.out, "corpus.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w = csv.DictWriter(f, fieldnames=list(dict.fromkeys(k for r in rows for k in r)),
+                           restval="")
         w.writeheader()
         w.writerows(rows)
     print(f"{len(rows)} cases -> {args.out}")
