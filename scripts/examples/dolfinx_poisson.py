@@ -23,7 +23,13 @@ homesh.order(p=P) (straight-sided), read by dolfinx.io.gmshio.model_to_mesh.
 FE degree = geometry order P. DOLFINx 0.5's gmshio reads triangles of order
 1, 2 and 3 only (Gmsh types 2, 9, 21; cpp.io.perm_gmsh has no 15-node triangle).
 
-Usage: dolfinx_poisson.py [--plot docs/dolfinx_convergence.png]
+--cells quads: the same study on quadrilaterals (issue 21): Gmsh's mesh recombined
+(Mesh.RecombineAll, Blossom: all quadrilaterals on this plate), then curved or
+raised by homesh the same way, solved with the tensor-product Lagrange element Q_P.
+DOLFINx 0.5's gmshio reads quadrilaterals of order 1 and 2 (Gmsh types 3, 10) and
+one cell type per mesh, so P = 1, 2.
+
+Usage: dolfinx_poisson.py [--cells triangles|quads] [--plot docs/dolfinx_convergence.png]
 Prints one line per (order, mesh, factor): h, L2 error, rate.
 """
 import argparse
@@ -46,6 +52,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 PLATE = os.path.join(ROOT, "geo", "plate_hole.geo")
 RADIUS = 0.5  # geo/plate_hole.geo's default Plate/Radius
 ORDERS = (1, 2, 3)  # the triangle orders DOLFINx 0.5's gmshio reads
+QUAD_ORDERS = (1, 2)  # and its quadrilateral orders
 FACTORS = (2.0, 1.0, 0.5)  # Mesh.MeshSizeFactor: LcHole = 0.1 s, LcFarfield = 0.2 s
 
 
@@ -56,12 +63,17 @@ def exact(x, y):
     return ufl.sin(2 * x) * ufl.exp(y)
 
 
-def plate_mesh(order, factor, curved):
-    """Gmsh model of the plate at order `order`: curved by homesh, or straight-sided."""
+def plate_mesh(order, factor, curved, quads=False):
+    """Gmsh model of the plate at order `order`: curved by homesh, or straight-sided;
+    all quadrilaterals if `quads`."""
     gmsh.clear()
     gmsh.option.setNumber("Mesh.MeshSizeFactor", factor)
     gmsh.open(PLATE)
+    gmsh.option.setNumber("Mesh.RecombineAll", 1 if quads else 0)
+    gmsh.option.setNumber("Mesh.RecombinationAlgorithm", 1)
     gmsh.model.mesh.generate(2)
+    if quads:
+        assert len(gmsh.model.mesh.getElementsByType(2)[0]) == 0, "recombination left triangles"
     if order > 1:
         (homesh.curve if curved else homesh.order)(p=order)
 
@@ -71,9 +83,10 @@ def boundary_dofs(V, facet_tags, tag):
     return dolfinx.fem.locate_dofs_topological(V, fdim, facet_tags.find(tag))
 
 
-def solve(order, factor, curved):
-    """L2 error and h = sqrt(2 |Omega_h| / triangles) of the degree-`order` solution."""
-    plate_mesh(order, factor, curved)
+def solve(order, factor, curved, quads=False):
+    """L2 error and h of the degree-`order` solution: h = sqrt(2 |Omega_h| / triangles), or
+    sqrt(|Omega_h| / quadrilaterals)."""
+    plate_mesh(order, factor, curved, quads)
     groups = {gmsh.model.getPhysicalName(d, t): t for d, t in gmsh.model.getPhysicalGroups(1)}
     mesh, _, facets = dolfinx.io.gmshio.model_to_mesh(gmsh.model, MPI.COMM_SELF, 0, gdim=2)
     V = dolfinx.fem.FunctionSpace(mesh, ("Lagrange", order))
@@ -98,8 +111,8 @@ def solve(order, factor, curved):
     quadrature = ufl.dx(metadata={"quadrature_degree": 2 * order + 4})
     error2 = dolfinx.fem.assemble_scalar(dolfinx.fem.form((uh - u_exact) ** 2 * quadrature))
     area = dolfinx.fem.assemble_scalar(dolfinx.fem.form(1.0 * quadrature(domain=mesh)))
-    triangles = mesh.topology.index_map(2).size_local
-    return math.sqrt(2 * area / triangles), math.sqrt(error2)
+    cells = mesh.topology.index_map(2).size_local
+    return math.sqrt((1 if quads else 2) * area / cells), math.sqrt(error2)
 
 
 def rates(hs, errors):
@@ -108,17 +121,17 @@ def rates(hs, errors):
             for i in range(len(hs) - 1)]
 
 
-def convergence(orders=ORDERS, factors=FACTORS):
+def convergence(orders=ORDERS, factors=FACTORS, quads=False):
     """{(order, "curved"|"straight"): (hs, errors, rates)}; gmsh must be initialized."""
     table = {}
     for p in orders:
         for kind in ("curved", "straight") if p > 1 else ("curved",):
-            hs, errors = zip(*(solve(p, s, kind == "curved") for s in factors))
+            hs, errors = zip(*(solve(p, s, kind == "curved", quads) for s in factors))
             table[(p, kind)] = (hs, errors, rates(hs, errors))
     return table
 
 
-def plot(table, path):
+def plot(table, path, quads=False):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -127,9 +140,11 @@ def plot(table, path):
     for (p, kind), (hs, errors, r) in sorted(table.items()):
         label = f"p = {p}" + ("" if p == 1 else f", {kind}") + f" (rate {r[-1]:.2f})"
         ax.loglog(hs, errors, "o-" if kind == "curved" else "s--", color=colours[p], label=label)
-    ax.set_xlabel("h = sqrt(2 |domain| / triangles)")
+    ax.set_xlabel("h = sqrt(|domain| / quadrilaterals)" if quads
+                  else "h = sqrt(2 |domain| / triangles)")
     ax.set_ylabel("L2 error")
-    ax.set_title("Poisson on the plate with a hole, DOLFINx 0.5, FE degree = p")
+    ax.set_title("Poisson on the plate with a hole, DOLFINx 0.5, FE degree = p"
+                 + (", quadrilaterals" if quads else ""))
     ax.title.set_fontsize(9)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
@@ -140,12 +155,14 @@ def plot(table, path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--plot", help="write a PNG of error against h")
+    parser.add_argument("--cells", choices=("triangles", "quads"), default="triangles")
     args = parser.parse_args()
+    quads = args.cells == "quads"
     logging.disable(logging.INFO)  # FFCx and cffi log every JIT compilation at INFO
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
     homesh.set_quiet(True)
-    table = convergence()
+    table = convergence(QUAD_ORDERS if quads else ORDERS, quads=quads)
     gmsh.finalize()
     print(f"{'p':>2} {'mesh':<9} {'factor':>6} {'h':>8} {'L2 error':>10} {'rate':>6}")
     for (p, kind), (hs, errors, r) in sorted(table.items()):
@@ -153,7 +170,7 @@ def main():
             rate = f"{r[i - 1]:6.2f}" if i else ""
             print(f"{p:>2} {kind:<9} {FACTORS[i]:>6g} {h:8.4f} {e:10.3e} {rate}")
     if args.plot:
-        plot(table, args.plot)
+        plot(table, args.plot, quads)
         print(f"wrote {args.plot}")
     return 0
 

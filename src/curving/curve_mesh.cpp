@@ -162,6 +162,12 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     r.deform = deform_mesh(raised, target, boundary, whole);
   }
   r.elastic_seconds = since(elastic);
+  // Complete means every boundary node at its target: a solve posed on no element (an
+  // all-quadrilateral mesh to a triangle-only solve) reports complete with none moved.
+  const double scale = (raised.x.rowwise().maxCoeff() - raised.x.rowwise().minCoeff()).norm();
+  for (int i = 0; i < raised.num_nodes() && r.deform.complete; ++i)
+    if (boundary[i] && (r.deform.mesh.x.col(i) - target.col(i)).norm() > 1e-12 * scale)
+      r.deform.complete = false;
   // A solve that fell short of step 1's valid guess (incomplete, or complete on its region
   // but poorer once put back: a local solve can break elements it was not posed on) gives
   // way to the guess, which step 3 then optimises.

@@ -420,9 +420,10 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
     res.energy_before += o.energy_before;
     res.energy_after += o.energy_after;
   }
-  res.worst_after = m.num_triangles() > 0 ? ratio.minCoeff() : 1.0;
-  for (int e = 0; e < m.num_triangles(); ++e)
-    res.poor_after += valid[e] && ratio(e) < opt.threshold;
+  // Over every 2D element: a caller holding the quadrilaterals' nodes gets them counted.
+  res.worst_after = m.num_elements_2d() > 0 ? ratio.minCoeff() : 1.0;
+  for (int e = 0; e < m.num_elements_2d(); ++e)
+    res.poor_after += before.min_det(e) > 0 && ratio(e) < opt.threshold;
   return res;
 }
 
