@@ -13,7 +13,8 @@
 //    raising added move; if that solve, or one restricted by deform.layers or
 //    deform.reach, cannot reach the whole motion, the whole mesh is solved
 //    again with every interior node free (the thesis' setting). A valid guess
-//    of step 1 that the solves do not beat (or that they break) is kept.
+//    of step 1 that the solves do not beat (or that they break) is kept, or
+//    optimised as a second start of step 3.
 // 3. Optimised: if `optimise` and elements are left below
 //    optimiser.threshold, the high-order optimiser (optimise_mesh.h) works on
 //    patches round them, boundary nodes sliding along the curves `curves`
@@ -108,8 +109,8 @@ struct CurveResult {
   std::string guess = "straight";  ///< step 1's guess kept: straight, blended or propagated
   double placed_worst = 0;         ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
   DeformResult deform;             ///< of the last solve (if any)
-  /// The solves fell short of step 1's valid guess (incomplete, or poorer): the guess
-  /// went on to step 3 instead (deform.mesh is the guess).
+  /// The result comes from step 1's valid guess, not the solve: the solve fell short of it
+  /// (incomplete, or poorer), and the guess was kept or optimised better than the solve.
   bool guess_over_solve = false;
   bool fell_back = false;         ///< the restricted solve fell short: solved with vertices free
   bool fell_back_whole = false;   ///< and that on the whole mesh (the region's fell short too)

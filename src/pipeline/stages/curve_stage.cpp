@@ -107,8 +107,8 @@ void run(Context& ctx, const CurveOptions& o) {
         r.worst_ratio, c.elastic_seconds);
   if (c.guess_over_solve)
     ctx.log.info(
-        "curve: the solve fell short of the {} guess (worst minJ/maxJ {:.4f}): the guess is "
-        "kept",
+        "curve: the result comes from the {} guess (worst minJ/maxJ {:.4f}), which the solve "
+        "fell short of",
         c.guess, c.placed_worst);
   if (c.optimised) {
     const OptimiseResult& op = c.optimisation;
