@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "fem/element_load.h"
 #include "fem/element_stiffness.h"
 #include "fem/solve_elasticity.h"
 #include "fem_test_support.h"
@@ -235,4 +236,70 @@ TEST_CASE(
   wrong.quad.conservativeResize(9, Eigen::NoChange);
   CHECK_THROWS_WITH(assemble_elasticity(wrong, ElasticityCoefficients{}),
                     Catch::Contains("9 nodes per quadrilateral for order 3"));
+}
+
+TEST_CASE("mixed assembly: the dense sum of the element matrices, and the eliminated system",
+          "[fem][quad][assembler]") {
+  Mesh m = mixed_square(3, 2, 1);
+  warp(m, 0.04);
+  ElasticityCoefficients c;
+  c.young = [](const QuadraturePoint& q) { return 1.0 + q.x(0) + 0.1 * q.element; };
+  c.poisson = 0.35;
+  c.body_force = Eigen::Vector2d(0.3, -1.0);
+  // K and b by hand: each element's Ke and fe (dofs [u_1 .. u_n, v_1 .. v_n])
+  // added at the interleaved global dofs.
+  const int N = 2 * m.num_nodes();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N, N);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(N);
+  const ElementTabulation tri_tab = tabulate_element(2, stiffness_quadrature_degree(2, 2));
+  const ElementTabulation quad_tab =
+      tabulate_quad_element(2, quad_stiffness_quadrature_degree(2, 2));
+  for (int e = 0; e < m.num_elements_2d(); ++e) {
+    const bool quad = e >= m.num_triangles();
+    const int local = quad ? e - m.num_triangles() : e;
+    const ElementTabulation& tab = quad ? quad_tab : tri_tab;
+    const Eigen::VectorXi nodes =
+        quad ? Eigen::VectorXi(m.quad.col(local)) : Eigen::VectorXi(m.tri.col(local));
+    const ElementGeometry g =
+        element_geometry(quad ? m.quad_nodes(local) : m.triangle_nodes(local), tab);
+    const Eigen::Index nq = g.x.cols(), n = nodes.size();
+    Eigen::VectorXd lambda(nq), mu(nq);
+    for (Eigen::Index q = 0; q < nq; ++q) {
+      const QuadraturePoint point{e, int(q), g.x.col(q)};
+      const Lame l = lame_plane_strain(c.young(point), c.poisson(point));
+      lambda(q) = l.lambda;
+      mu(q) = l.mu;
+    }
+    const Eigen::MatrixXd Ke = element_stiffness(g, lambda, mu);
+    const Eigen::VectorXd fe =
+        element_load(g, tab.N, Eigen::Matrix2Xd(Eigen::Vector2d(0.3, -1.0).replicate(1, nq)),
+                     Eigen::Matrix3Xd::Zero(3, nq));
+    for (Eigen::Index a = 0; a < 2 * n; ++a) {
+      const int row = 2 * nodes(a % n) + int(a / n);
+      b(row) += fe(a);
+      for (Eigen::Index k = 0; k < 2 * n; ++k) K(row, 2 * nodes(k % n) + int(k / n)) += Ke(a, k);
+    }
+  }
+  const LinearSystem sys = assemble_elasticity(m, c);
+  const Eigen::MatrixXd assembled = sys.K;
+  CHECK((assembled - K).cwiseAbs().maxCoeff() < 1e-13 * K.cwiseAbs().maxCoeff());
+  CHECK((sys.b - b).cwiseAbs().maxCoeff() < 1e-13 * b.cwiseAbs().maxCoeff());
+
+  // The eliminated system of the repeated assembly against apply_dirichlet.
+  DirichletBC bc;
+  for (int i : square_boundary(m))
+    if (m.x(0, i) < 0.01) bc.fix(i, Eigen::Vector2d(0.05 * m.x(1, i), -0.02));
+  bc.fix(m.quad(8, 1), 1, 0.01);  // one component of a quad's interior node
+  LinearSystem reference = sys;
+  apply_dirichlet(bc, reference);
+  const ElasticityAssembler assembler(m, bc.dofs);
+  EliminatedSystem eliminated;
+  assembler.assemble(m.x, c, eliminated);
+  const Eigen::MatrixXd lower = Eigen::MatrixXd(reference.K).triangularView<Eigen::Lower>();
+  CHECK((Eigen::MatrixXd(eliminated.K) - lower).cwiseAbs().maxCoeff() <
+        1e-13 * lower.cwiseAbs().maxCoeff());
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(N);
+  for (std::size_t k = 0; k < bc.dofs.size(); ++k) g(bc.dofs[k]) = bc.values[k];
+  CHECK((assembler.rhs(eliminated, g) - reference.b).cwiseAbs().maxCoeff() <
+        1e-13 * reference.b.cwiseAbs().maxCoeff());
 }
