@@ -145,3 +145,46 @@ TEST_CASE("regions on a mixed mesh index quadrilaterals after the triangles", "[
   CHECK_THROWS_WITH(deform_mesh(b.m, b.target, b.prescribed, o),
                     Catch::Contains("region element 54 out of range 0..53"));
 }
+
+TEST_CASE("a boundary layer of quadrilaterals curved onto its circle, triangles outside, p = 2, 3",
+          "[curving][quad]") {
+  // The quarter annulus 1 <= r <= 2 in 6 by 6 cells graded as r = 1 + s^3
+  // (first layer 1/216 thick against a chord sag of 1 - cos(pi/24) = 0.0086),
+  // straight-sided: quadrilaterals in the two layers at the inner circle (or
+  // everywhere), triangles outside; the nodes of both circles moved onto them.
+  // Put there alone they invert the first layer; the analogy (the curve
+  // stage's defaults) keeps minJ/maxJ >= 0.9 on the mixed mesh, and on the
+  // quad mesh within 5 % of its straight-sided start (bilinear cells of an
+  // annulus, whose det J varies: 0.79).
+  auto corner = [](const Eigen::Vector2d& y) {
+    const double r = 1 + std::pow(y(0), 3.0), t = M_PI / 2 * y(1);
+    return Eigen::Vector2d(r * std::cos(t), r * std::sin(t));
+  };
+  for (int p : {2, 3})
+    for (int quad_columns : {2, 6}) {
+      INFO("p = " << p << ", quad columns " << quad_columns);
+      const Mesh param = fem_test::mixed_square(6, p, quad_columns);
+      const Mesh m = fem_test::mixed_square(6, p, quad_columns, corner);
+      Eigen::Matrix2Xd target = m.x;
+      const std::vector<bool> prescribed = boundary_nodes(m);
+      for (int i = 0; i < m.num_nodes(); ++i) {
+        const double s = param.x(0, i);
+        if (std::abs(s) < 1e-12 || std::abs(s - 1) < 1e-12)
+          target.col(i) = (1 + s) * m.x.col(i).normalized();
+      }
+      Mesh placed = m;
+      placed.x = target;
+      REQUIRE(mesh_validity(placed).invalid > 0);
+      const DeformResult r = deform_mesh(m, target, prescribed);
+      CHECK(r.complete);
+      if (quad_columns == 2)
+        CHECK(r.worst_ratio > 0.9);
+      else
+        CHECK(r.worst_ratio > 0.95 * mesh_validity(m).worst);
+      double off_circle = 0;
+      for (int i = 0; i < m.num_nodes(); ++i)
+        if (std::abs(param.x(0, i)) < 1e-12)
+          off_circle = std::max(off_circle, std::abs(r.mesh.x.col(i).norm() - 1));
+      CHECK(off_circle < 1e-12);
+    }
+}

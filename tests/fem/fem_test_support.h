@@ -46,57 +46,77 @@ inline Mesh unit_square(int n, int p) {
 // (as unit_square), all counter-clockwise. The high-order nodes are the images
 // of the reference nodes (affine on a triangle, bilinear on a quadrilateral),
 // shared between elements. Boundary nodes are classified on curves (dim 1),
-// the four corners of the square on points (dim 0).
-inline Mesh mixed_square(int n, int p, int quad_columns) {
+// the four corners of the square on points (dim 0). With `corner_map`, the
+// cell corners go to corner_map(corner) and every element stays
+// straight-sided between them (its other nodes interpolated as above): a
+// structured mixed mesh of another domain, its nodes classified by their
+// position on the square.
+inline Mesh mixed_square(
+    int n, int p, int quad_columns,
+    const std::function<Eigen::Vector2d(const Eigen::Vector2d&)>& corner_map = nullptr) {
   Mesh m;
   m.order = p;
   std::map<std::pair<long, long>, int> index;  // node at (i, j) / (n p)
-  std::vector<Eigen::Vector2d> x;
-  auto node = [&](const Eigen::Vector2d& y) {
+  std::vector<Eigen::Vector2d> x, mapped;
+  // Node at y of the square, at z once mapped.
+  auto node = [&](const Eigen::Vector2d& y, const Eigen::Vector2d& z) {
     const std::pair<long, long> key(std::lround(y(0) * n * p), std::lround(y(1) * n * p));
     const auto it = index.find(key);
     if (it != index.end()) return it->second;
     x.push_back(Eigen::Vector2d(double(key.first), double(key.second)) / double(n * p));
+    mapped.push_back(z);
     return index[key] = int(x.size()) - 1;
   };
+  auto map = [&](const Eigen::Vector2d& y) { return corner_map ? corner_map(y) : y; };
   const Eigen::Matrix2Xd tri_ref = reference_nodes(p), quad_ref = quad_reference_nodes(p);
   std::vector<Eigen::VectorXi> tris, quads;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const Eigen::Vector2d a(double(i) / n, double(j) / n), b(double(i + 1) / n, double(j) / n),
           c(double(i + 1) / n, double(j + 1) / n), d(double(i) / n, double(j + 1) / n);
+      const Eigen::Vector2d A = map(a), B = map(b), C = map(c), D = map(d);
       if (i < quad_columns) {
         Eigen::VectorXi q(quad_ref.cols());
         for (Eigen::Index k = 0; k < quad_ref.cols(); ++k) {
           const double u = quad_ref(0, k), v = quad_ref(1, k);
-          q(k) = node((1 - u) * (1 - v) * a + u * (1 - v) * b + u * v * c + (1 - u) * v * d);
+          auto bilinear = [u, v](const Eigen::Vector2d& w00, const Eigen::Vector2d& w10,
+                                 const Eigen::Vector2d& w11, const Eigen::Vector2d& w01) {
+            return Eigen::Vector2d((1 - u) * (1 - v) * w00 + u * (1 - v) * w10 + u * v * w11 +
+                                   (1 - u) * v * w01);
+          };
+          q(k) = node(bilinear(a, b, c, d), bilinear(A, B, C, D));
         }
         quads.push_back(q);
         continue;
       }
-      for (const auto& corners :
-           {std::array<Eigen::Vector2d, 3>{a, b, c}, std::array<Eigen::Vector2d, 3>{a, c, d}}) {
+      for (const auto& corners : {std::array<Eigen::Vector2d, 6>{a, b, c, A, B, C},
+                                  std::array<Eigen::Vector2d, 6>{a, c, d, A, C, D}}) {
         Eigen::VectorXi t(tri_ref.cols());
-        for (Eigen::Index k = 0; k < tri_ref.cols(); ++k)
-          t(k) = node(corners[0] + tri_ref(0, k) * (corners[1] - corners[0]) +
-                      tri_ref(1, k) * (corners[2] - corners[0]));
+        for (Eigen::Index k = 0; k < tri_ref.cols(); ++k) {
+          const double u = tri_ref(0, k), v = tri_ref(1, k);
+          t(k) = node(corners[0] + u * (corners[1] - corners[0]) + v * (corners[2] - corners[0]),
+                      corners[3] + u * (corners[4] - corners[3]) + v * (corners[5] - corners[3]));
+        }
         tris.push_back(t);
       }
     }
   // Number the nodes by position ((i, j) lexicographic), whatever the cells'
   // kinds: two such meshes of one n and p have the same nodes.
   std::vector<int> rank(x.size());
+  std::vector<Eigen::Vector2d> position(x.size());
   int next = 0;
   for (const auto& entry : index) {
     x[std::size_t(next)] =
         Eigen::Vector2d(double(entry.first.first), double(entry.first.second)) / double(n * p);
+    position[std::size_t(next)] =
+        corner_map ? mapped[std::size_t(entry.second)] : x[std::size_t(next)];
     rank[std::size_t(entry.second)] = next++;
   }
   for (auto* elements : {&tris, &quads})
     for (Eigen::VectorXi& e : *elements)
       for (Eigen::Index k = 0; k < e.size(); ++k) e(k) = rank[std::size_t(e(k))];
   m.x.resize(2, Eigen::Index(x.size()));
-  for (std::size_t k = 0; k < x.size(); ++k) m.x.col(Eigen::Index(k)) = x[k];
+  for (std::size_t k = 0; k < x.size(); ++k) m.x.col(Eigen::Index(k)) = position[k];
   m.node_class.resize(x.size());
   for (std::size_t k = 0; k < x.size(); ++k) {
     const bool on_x = x[k](0) < 1e-12 || x[k](0) > 1 - 1e-12;
