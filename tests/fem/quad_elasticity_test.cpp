@@ -136,6 +136,16 @@ TEST_CASE(
       CHECK((s.u - interpolate(m, affine)).cwiseAbs().maxCoeff() < 1e-10);
     }
   }
+  // Quadrilaterals alone, the triangle matrix left empty (0 by 0).
+  Mesh m = mixed_square(2, 3, 2);
+  m.tri.resize(0, 0);
+  m.tri_entity.clear();
+  warp(m, 0.04);
+  DirichletBC bc;
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_class[i].dim < 2) bc.fix(i, affine(m.x.col(i)));
+  const ElasticitySolution s = solve_elasticity(m, ElasticityCoefficients{}, bc);
+  CHECK((s.u - interpolate(m, affine)).cwiseAbs().maxCoeff() < 1e-12);
 }
 
 TEST_CASE("quads and mixed meshes: L2 error at rate p + 1, energy error at rate p, p = 1..3",
