@@ -7,6 +7,9 @@
 
 #include "core/error.h"
 #include "curving/element_distortion.h"
+#include "element/quad_lagrange_basis.h"
+#include "element/quad_reference_nodes.h"
+#include "element/square_quadrature.h"
 #include "fem/element_tabulation.h"
 #include "quality/ideal_jacobian.h"
 #include "quality/shape_measures.h"
@@ -33,10 +36,69 @@ ElasticityCoefficients plain(const Mesh&, const Mesh&, const FormulationParams& 
   return base(p);
 }
 
+// element_distortion (curving/element_distortion.h) of the triangles followed
+// by the same quantities of the quadrilaterals, in the 2D element order of
+// core/mesh.h. The ideal element of a quadrilateral is the unit square, so
+// W = J (as the quad quality measures, quality/mesh_quality.h): area = int det J
+// over the square (square_quadrature(2p - 1), exact: det J is of degree
+// 2p - 1 per variable), q17_ratio = min det J / max det J and shape = min
+// Q11(J) over the order-2p lattice of the square (corners included), as the
+// triangles' over theirs.
+ElementDistortion distortion_2d(const Mesh& m) {
+  ElementDistortion d = element_distortion(m);
+  if (m.num_quads() == 0) return d;
+  const int p = m.order, t = m.num_triangles(), n = m.num_elements_2d();
+  const QuadLagrangeBasis basis(p);
+  const Eigen::Matrix2Xd lattice = quad_reference_nodes(2 * p);
+  const QuadratureRule rule = square_quadrature(2 * p - 1);
+  Eigen::MatrixXd lu, lv, qu, qv;
+  basis.tabulate_gradients(lattice, lu, lv);
+  basis.tabulate_gradients(rule.points, qu, qv);
+  d.area.conservativeResize(n);
+  d.q17_ratio.conservativeResize(n);
+  d.shape.conservativeResize(n);
+  for (int e = 0; e < m.num_quads(); ++e) {
+    const Eigen::Matrix2Xd X = m.quad_nodes(e);
+    auto jacobian = [&](const Eigen::MatrixXd& du, const Eigen::MatrixXd& dv, Eigen::Index k) {
+      Eigen::Matrix2d J;
+      J.col(0) = X * du.col(k);
+      J.col(1) = X * dv.col(k);
+      return J;
+    };
+    double lo = INFINITY, hi = -INFINITY, shape = 1.0;
+    for (Eigen::Index k = 0; k < lattice.cols(); ++k) {
+      const Eigen::Matrix2d J = jacobian(lu, lv, k);
+      const double v = J.determinant();
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+      shape = std::min(shape, v > 0 ? condition_number_quality(J) : 0.0);
+    }
+    double area = 0;
+    for (Eigen::Index k = 0; k < rule.points.cols(); ++k)
+      area += rule.weights(k) * jacobian(qu, qv, k).determinant();
+    d.q17_ratio(t + e) = hi > 0 ? lo / hi : 0.0;
+    d.shape(t + e) = shape;
+    d.area(t + e) = area;
+  }
+  return d;
+}
+
+// The A_e of the area formulations: a triangle's area, half a quadrilateral's.
+// E = 1 / A_e stiffens small elements; halving a quadrilateral's area makes a
+// grid of cells equally stiff whether its cells are quadrilaterals or pairs of
+// triangles (measured: with whole areas the quadrilaterals of a mixed mesh were
+// twice as soft as the triangles beside them and took the deformation, worst
+// minJ/maxJ 0.19 against 0.55 for E = 1, tests/curving/deform_mesh_quad_test.cpp).
+Eigen::VectorXd size_area(const Mesh& m) {
+  Eigen::VectorXd a = distortion_2d(m).area;
+  a.tail(m.num_quads()) *= 0.5;
+  return a;
+}
+
 // Case 2: E = 1 / Ae (Palmerio's stiffening of small elements).
 ElasticityCoefficients area(const Mesh& m, const Mesh&, const FormulationParams& p) {
   ElasticityCoefficients c = base(p);
-  c.young = per_element(element_distortion(m).area.cwiseInverse());
+  c.young = per_element(size_area(m).cwiseInverse());
   return c;
 }
 
@@ -45,7 +107,7 @@ ElasticityCoefficients area(const Mesh& m, const Mesh&, const FormulationParams&
 // no force (as T0 = 1 does for the heat terms).
 ElasticityCoefficients force_q17(const Mesh& m, const Mesh&, const FormulationParams& p) {
   ElasticityCoefficients c = base(p);
-  const Eigen::VectorXd t = inverse_ratio(element_distortion(m).q17_ratio);
+  const Eigen::VectorXd t = inverse_ratio(distortion_2d(m).q17_ratio);
   c.body_force = [t, s = p.heat](const QuadraturePoint& q) {
     return Eigen::Vector2d::Constant(s * (t(q.element) - 1.0));
   };
@@ -61,17 +123,17 @@ ElasticityCoefficients heated(const FormulationParams& p, Eigen::VectorXd temper
 
 // Case 4: T = (min Q17 / max Q17)^-1 per element.
 ElasticityCoefficients heat_q17(const Mesh& m, const Mesh&, const FormulationParams& p) {
-  return heated(p, inverse_ratio(element_distortion(m).q17_ratio));
+  return heated(p, inverse_ratio(distortion_2d(m).q17_ratio));
 }
 
 // Case 5: T = (min Q4 / max Q4)^-1, Q4 = omega^2 (Eq 3.38).
 ElasticityCoefficients heat_q4(const Mesh& m, const Mesh&, const FormulationParams& p) {
-  return heated(p, inverse_ratio(element_distortion(m).q17_ratio.cwiseAbs2()));
+  return heated(p, inverse_ratio(distortion_2d(m).q17_ratio.cwiseAbs2()));
 }
 
 // Section 4.4.2: T = 1 / Ae, scaled so the mean element is at T0 = 1.
 ElasticityCoefficients heat_area(const Mesh& m, const Mesh&, const FormulationParams& p) {
-  const Eigen::VectorXd a = element_distortion(m).area;
+  const Eigen::VectorXd a = size_area(m);
   return heated(p, a.mean() * a.cwiseInverse());
 }
 
@@ -89,42 +151,65 @@ Eigen::Matrix2d scaled_metric(const Eigen::Matrix2d& F) {
   return det > 0 ? Eigen::Matrix2d(M / std::sqrt(det)) : Eigen::Matrix2d::Identity();
 }
 
-// The tabulation at the rule the assembly uses (coefficients are read at its
-// points by QuadraturePoint::index).
-ElementTabulation assembly_tabulation(const Mesh& m, const FormulationParams& p) {
-  return tabulate_element(m.order,
-                          stiffness_quadrature_degree(m.order, p.assembly.quadrature_margin));
+// The tabulations at the rules the assembly uses (coefficients are read at
+// their points by QuadraturePoint::index): triangles, and quadrilaterals if m
+// has any.
+struct AssemblyTabulations {
+  ElementTabulation triangle, quad;
+};
+
+AssemblyTabulations assembly_tabulations(const Mesh& m, const FormulationParams& p) {
+  AssemblyTabulations tabs;
+  const int margin = p.assembly.quadrature_margin;
+  tabs.triangle = tabulate_element(m.order, stiffness_quadrature_degree(m.order, margin));
+  if (m.num_quads() > 0)
+    tabs.quad = tabulate_quad_element(m.order, quad_stiffness_quadrature_degree(m.order, margin));
+  return tabs;
 }
 
-// The reference->physical Jacobian J of every element of m at every point of
-// tab's rule, element-major: entry e * #points + k.
-std::vector<Eigen::Matrix2d> quadrature_jacobians(const Mesh& m, const ElementTabulation& tab) {
-  const Eigen::Index nq = tab.rule.points.cols();
-  std::vector<Eigen::Matrix2d> J(static_cast<std::size_t>(m.num_triangles() * nq));
-  for (int e = 0; e < m.num_triangles(); ++e) {
-    const Eigen::Matrix2Xd X = m.triangle_nodes(e);
-    for (Eigen::Index k = 0; k < nq; ++k) {
-      J[e * nq + k].col(0) = X * tab.dNdu.col(k);
-      J[e * nq + k].col(1) = X * tab.dNdv.col(k);
+// The reference->physical Jacobian J of every 2D element of m at every point
+// of its rule, element-major: point k of element e at start[e] + k
+// (e * #points on a triangle mesh).
+struct PointJacobians {
+  std::vector<Eigen::Matrix2d> J;
+  std::vector<std::size_t> start;  // #2D elements + 1
+};
+
+PointJacobians quadrature_jacobians(const Mesh& m, const AssemblyTabulations& tabs) {
+  PointJacobians out;
+  out.start.push_back(0);
+  auto add = [&](const Eigen::Matrix2Xd& X, const ElementTabulation& tab) {
+    for (Eigen::Index k = 0; k < tab.rule.points.cols(); ++k) {
+      Eigen::Matrix2d J;
+      J.col(0) = X * tab.dNdu.col(k);
+      J.col(1) = X * tab.dNdv.col(k);
+      out.J.push_back(J);
     }
-  }
-  return J;
+    out.start.push_back(out.J.size());
+  };
+  for (int e = 0; e < m.num_triangles(); ++e) add(m.triangle_nodes(e), tabs.triangle);
+  for (int e = 0; e < m.num_quads(); ++e) add(m.quad_nodes(e), tabs.quad);
+  return out;
 }
 
 ElasticityCoefficients metric(const Mesh& m, const Mesh& initial, const FormulationParams& p,
                               bool ideal) {
   ElasticityCoefficients c = base(p);
-  const ElementTabulation tab = assembly_tabulation(m, p);
-  const Eigen::Index nq = tab.rule.points.cols();
-  const std::vector<Eigen::Matrix2d> J = quadrature_jacobians(m, tab),
-                                     J0 = quadrature_jacobians(initial, tab);
+  const AssemblyTabulations tabs = assembly_tabulations(m, p);
+  const PointJacobians J = quadrature_jacobians(m, tabs), J0 = quadrature_jacobians(initial, tabs);
+  // Ideal->physical: W = J inv(J_ri) on a triangle (quality/ideal_jacobian.h);
+  // W = J on a quadrilateral, whose ideal element is the unit square.
   const Eigen::Matrix2d map = ideal ? Eigen::Matrix2d(reference_to_ideal_jacobian().inverse())
                                     : Eigen::Matrix2d::Identity();
-  std::vector<Eigen::Matrix2d> table(J.size());
-  for (std::size_t i = 0; i < J.size(); ++i)
-    table[i] = scaled_metric(J[i] * map) - scaled_metric(J0[i] * map);
-  c.anisotropic_stress = [table = std::move(table), nq, s = -p.heat](const QuadraturePoint& q) {
-    return Eigen::Matrix2d(s * table[q.element * nq + q.index]);
+  const std::size_t quads_from = J.start[std::size_t(m.num_triangles())];
+  std::vector<Eigen::Matrix2d> table(J.J.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const Eigen::Matrix2d& F = i < quads_from ? map : Eigen::Matrix2d::Identity();
+    table[i] = scaled_metric(J.J[i] * F) - scaled_metric(J0.J[i] * F);
+  }
+  c.anisotropic_stress = [table = std::move(table), start = J.start,
+                          s = -p.heat](const QuadraturePoint& q) {
+    return Eigen::Matrix2d(s * table[start[std::size_t(q.element)] + std::size_t(q.index)]);
   };
   return c;
 }
@@ -140,8 +225,7 @@ ElasticityCoefficients metric_ideal(const Mesh& m, const Mesh& initial,
 // Case 8: E = (min Q17 / max Q17)^-power (power 1 in the thesis), no added terms.
 ElasticityCoefficients stiff_q17(const Mesh& m, const Mesh&, const FormulationParams& p) {
   ElasticityCoefficients c = base(p);
-  c.young =
-      per_element(inverse_ratio(element_distortion(m).q17_ratio).array().pow(p.power).matrix());
+  c.young = per_element(inverse_ratio(distortion_2d(m).q17_ratio).array().pow(p.power).matrix());
   return c;
 }
 
@@ -156,7 +240,7 @@ ElasticityCoefficients stiff_q17(const Mesh& m, const Mesh&, const FormulationPa
 // Benney, J. Appl. Mech. 70, 2003).
 ElasticityCoefficients stiff_shape(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
   ElasticityCoefficients c = base(p);
-  const Eigen::VectorXd q = element_distortion(m).shape, q0 = element_distortion(initial).shape;
+  const Eigen::VectorXd q = distortion_2d(m).shape, q0 = distortion_2d(initial).shape;
   const Eigen::VectorXd ratio = q.cwiseQuotient(q0.cwiseMax(1e-12)).cwiseMin(1.0);
   c.young = per_element(inverse_ratio(ratio).array().pow(p.power).matrix());
   return c;
@@ -183,27 +267,25 @@ ElasticityCoefficients stiff_shape(const Mesh& m, const Mesh& initial, const For
 // straight-sided initial mesh, so then E = 1 and nu as given.
 ElasticityCoefficients stiff_shear(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
   ElasticityCoefficients c = base(p);
-  const ElementTabulation tab = assembly_tabulation(m, p);
-  const Eigen::Index nq = tab.rule.points.cols();
-  const std::vector<Eigen::Matrix2d> J = quadrature_jacobians(m, tab),
-                                     J0 = quadrature_jacobians(initial, tab);
-  const Eigen::VectorXd ratio = element_distortion(m).q17_ratio;
+  const AssemblyTabulations tabs = assembly_tabulations(m, p);
+  const PointJacobians J = quadrature_jacobians(m, tabs), J0 = quadrature_jacobians(initial, tabs);
+  const Eigen::VectorXd ratio = distortion_2d(m).q17_ratio;
   const Lame lame0 = lame_plane_strain(1.0, p.poisson);
   const double lambda = lame0.lambda;
-  std::vector<double> young(J.size()), poisson(J.size());
-  for (std::size_t i = 0; i < J.size(); ++i) {
-    const Eigen::Matrix2d F = J[i] * J0[i].inverse();
-    const double q = F.determinant() > 0 ? condition_number_quality(F) : 0.0;
-    const double mu =
-        lame0.mu * std::pow(std::max(ratio(Eigen::Index(i) / nq) * q, 1e-4), -p.power);
-    young[i] = mu * (3 * lambda + 2 * mu) / (lambda + mu);
-    poisson[i] = lambda / (2 * (lambda + mu));
-  }
-  c.young = [young = std::move(young), nq](const QuadraturePoint& q) {
-    return young[q.element * nq + q.index];
+  std::vector<double> young(J.J.size()), poisson(J.J.size());
+  for (int e = 0; e + 1 < int(J.start.size()); ++e)
+    for (std::size_t i = J.start[std::size_t(e)]; i < J.start[std::size_t(e) + 1]; ++i) {
+      const Eigen::Matrix2d F = J.J[i] * J0.J[i].inverse();
+      const double q = F.determinant() > 0 ? condition_number_quality(F) : 0.0;
+      const double mu = lame0.mu * std::pow(std::max(ratio(e) * q, 1e-4), -p.power);
+      young[i] = mu * (3 * lambda + 2 * mu) / (lambda + mu);
+      poisson[i] = lambda / (2 * (lambda + mu));
+    }
+  c.young = [young = std::move(young), start = J.start](const QuadraturePoint& q) {
+    return young[start[std::size_t(q.element)] + std::size_t(q.index)];
   };
-  c.poisson = [poisson = std::move(poisson), nq](const QuadraturePoint& q) {
-    return poisson[q.element * nq + q.index];
+  c.poisson = [poisson = std::move(poisson), start = J.start](const QuadraturePoint& q) {
+    return poisson[start[std::size_t(q.element)] + std::size_t(q.index)];
   };
   return c;
 }

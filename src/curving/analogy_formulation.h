@@ -9,6 +9,14 @@
 // stress adds to the stress, so the coefficient passed on is beta = -heat.
 // Stress-free temperature T0 = 1: an undistorted element (min Q / max Q = 1) is
 // not heated.
+//
+// Meshes of triangles and quadrilaterals alike: per-element quantities are
+// indexed by 2D element (triangles, then quadrilaterals, core/mesh.h) and
+// per-point ones follow each kind's rule (fem/elasticity_assembler.h). The
+// ideal element of a quadrilateral is the unit square, so its ideal->physical
+// Jacobian W is J (metric_ideal, Q11 of stiff_shape), as for the quality
+// measures (quality/mesh_quality.h); its Q17 ratio and Q11 are taken over the
+// order-2p lattice of the square.
 #include <string>
 #include <vector>
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <unordered_map>
 
 #include "core/error.h"
@@ -18,40 +19,64 @@ std::vector<bool> boundary_nodes(const Mesh& m) {
   return b;
 }
 
+namespace {
+
+// The nodes of 2D element e: triangle e, or quadrilateral e - #triangles
+// (core/mesh.h).
+Eigen::MatrixXi::ConstColXpr element_nodes(const Mesh& m, int e) {
+  return e < m.num_triangles() ? m.tri.col(e) : m.quad.col(e - m.num_triangles());
+}
+
+// 3 for a triangle, 4 for a quadrilateral: its corners head its nodes.
+int corner_count(const Mesh& m, int e) { return e < m.num_triangles() ? 3 : 4; }
+
+}  // namespace
+
 std::vector<bool> vertex_nodes(const Mesh& m) {
   std::vector<bool> v(static_cast<std::size_t>(m.num_nodes()), false);
-  for (int e = 0; e < m.num_triangles(); ++e)
-    for (int k = 0; k < 3; ++k) v[m.tri(k, e)] = true;
+  for (int e = 0; e < m.num_elements_2d(); ++e) {
+    const auto nodes = element_nodes(m, e);
+    for (int k = 0; k < corner_count(m, e); ++k) v[nodes(k)] = true;
+  }
   return v;
 }
 
 std::vector<int> moving_region(const Mesh& m, const std::vector<bool>& moving, int layers) {
-  std::vector<bool> reached = moving, selected(m.num_triangles(), false);
+  const int n = m.num_elements_2d();
+  std::vector<bool> reached = moving, selected(n, false);
   for (int layer = 0; layer < layers; ++layer) {
-    for (int e = 0; e < m.num_triangles(); ++e)
-      for (int i = 0; i < m.tri.rows() && !selected[e]; ++i) selected[e] = reached[m.tri(i, e)];
-    for (int e = 0; e < m.num_triangles(); ++e)
-      if (selected[e])
-        for (int i = 0; i < m.tri.rows(); ++i) reached[m.tri(i, e)] = true;
+    for (int e = 0; e < n; ++e) {
+      const auto nodes = element_nodes(m, e);
+      for (Eigen::Index i = 0; i < nodes.size() && !selected[e]; ++i)
+        selected[e] = reached[nodes(i)];
+    }
+    for (int e = 0; e < n; ++e)
+      if (selected[e]) {
+        const auto nodes = element_nodes(m, e);
+        for (Eigen::Index i = 0; i < nodes.size(); ++i) reached[nodes(i)] = true;
+      }
   }
   std::vector<int> region;
-  for (int e = 0; e < m.num_triangles(); ++e)
+  for (int e = 0; e < n; ++e)
     if (selected[e]) region.push_back(e);
   return region;
 }
 
 std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, double reach) {
-  // The disks (centroid, reach * longest edge) of the triangles touching a
-  // moving node, hashed on a grid of their mean diameter.
+  // The disks (corner centroid, reach * longest edge) of the elements touching
+  // a moving node, hashed on a grid of their mean diameter.
+  const int n = m.num_elements_2d();
   std::vector<Eigen::Vector2d> centre;
   std::vector<double> radius;
-  for (int e = 0; e < m.num_triangles(); ++e) {
+  for (int e = 0; e < n; ++e) {
+    const auto nodes = element_nodes(m, e);
     bool touches = false;
-    for (int i = 0; i < m.tri.rows() && !touches; ++i) touches = moving[m.tri(i, e)];
+    for (Eigen::Index i = 0; i < nodes.size() && !touches; ++i) touches = moving[nodes(i)];
     if (!touches) continue;
+    const int corners = corner_count(m, e);
     double h = 0;
-    for (int a = 0; a < 3; ++a)
-      h = std::max(h, (m.x.col(m.tri(a, e)) - m.x.col(m.tri((a + 1) % 3, e))).norm());
+    for (int a = 0; a < corners; ++a)
+      h = std::max(h, (m.x.col(nodes(a)) - m.x.col(nodes((a + 1) % corners))).norm());
     centre.push_back(m.corner_centroid(e));
     radius.push_back(reach * h);
   }
@@ -80,8 +105,12 @@ std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, do
       if ((x - centre[k]).norm() <= radius[k]) return true;
     return false;
   };
-  for (int e = 0; e < m.num_triangles(); ++e)
-    if (near(m.tri(0, e)) || near(m.tri(1, e)) || near(m.tri(2, e))) region.push_back(e);
+  for (int e = 0; e < n; ++e) {
+    const auto nodes = element_nodes(m, e);
+    bool in = false;
+    for (int a = 0; a < corner_count(m, e) && !in; ++a) in = near(nodes(a));
+    if (in) region.push_back(e);
+  }
   return region;
 }
 
@@ -97,25 +126,45 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
                                   : opt.layers > 0    ? moving_region(m, moving, opt.layers)
                                                       : reach_region(m, moving, opt.reach);
   if (region.empty()) return {m, 1.0, true, 0, 0, mesh_validity(m).worst, 0, 0};
-  std::vector<bool> inside(m.num_triangles(), false), outside_node(m.num_nodes(), false);
-  for (int e : region) inside[e] = true;
-  for (int e = 0; e < m.num_triangles(); ++e)
-    if (!inside[e])
-      for (int i = 0; i < m.tri.rows(); ++i) outside_node[m.tri(i, e)] = true;
+  const int num_2d = m.num_elements_2d(), num_tri = m.num_triangles();
+  std::vector<bool> inside(num_2d, false), outside_node(m.num_nodes(), false);
+  for (int e : region) {
+    if (e < 0 || e >= num_2d)
+      throw Error("deform_mesh: region element " + std::to_string(e) + " out of range 0.." +
+                  std::to_string(num_2d - 1));
+    inside[e] = true;
+  }
+  for (int e = 0; e < num_2d; ++e)
+    if (!inside[e]) {
+      const auto nodes = element_nodes(m, e);
+      for (Eigen::Index i = 0; i < nodes.size(); ++i) outside_node[nodes(i)] = true;
+    }
   std::vector<int> local(m.num_nodes(), -1), global;
   Mesh sub;
   sub.order = m.order;
-  sub.tri.resize(m.tri.rows(), Eigen::Index(region.size()));
-  for (std::size_t k = 0; k < region.size(); ++k) {
-    for (int i = 0; i < m.tri.rows(); ++i) {
-      int& node = local[m.tri(i, region[k])];
+  const Eigen::Index sub_tri =
+      std::count_if(region.begin(), region.end(), [num_tri](int e) { return e < num_tri; });
+  sub.tri.resize(m.tri.rows(), sub_tri);
+  sub.quad.resize(m.quad.rows(), Eigen::Index(region.size()) - sub_tri);
+  Eigen::Index next_tri = 0, next_quad = 0;
+  for (int e : region) {
+    const auto nodes = element_nodes(m, e);
+    const bool triangle = e < num_tri;
+    for (Eigen::Index i = 0; i < nodes.size(); ++i) {
+      int& node = local[nodes(i)];
       if (node < 0) {
         node = int(global.size());
-        global.push_back(m.tri(i, region[k]));
+        global.push_back(nodes(i));
       }
-      sub.tri(i, Eigen::Index(k)) = node;
+      (triangle ? sub.tri(i, next_tri) : sub.quad(i, next_quad)) = node;
     }
-    if (!m.tri_entity.empty()) sub.tri_entity.push_back(m.tri_entity[region[k]]);
+    if (triangle) {
+      if (!m.tri_entity.empty()) sub.tri_entity.push_back(m.tri_entity[e]);
+      ++next_tri;
+    } else {
+      if (!m.quad_entity.empty()) sub.quad_entity.push_back(m.quad_entity[e - num_tri]);
+      ++next_quad;
+    }
   }
   sub.x.resize(2, Eigen::Index(global.size()));
   Eigen::Matrix2Xd sub_target(2, Eigen::Index(global.size()));
@@ -136,7 +185,7 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
   r.mesh = m;
   for (std::size_t k = 0; k < global.size(); ++k)
     r.mesh.x.col(global[k]) = s.mesh.x.col(Eigen::Index(k));
-  // Prescribed nodes in no triangle of the region (an explicit region, e.g. round
+  // Prescribed nodes in no element of the region (an explicit region, e.g. round
   // the poor elements of a placed mesh, need not hold every moving node) go to
   // their targets: left where they were, the curve stage's local solve kept the
   // hole of the plate straight-sided away from its poor elements (DOLFINx's
@@ -163,7 +212,7 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
   const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
   const Eigen::Matrix2Xd start = m.x;
 
-  DeformResult r{m, 0.0, false, 0, 0, 1.0, 0, m.num_triangles()};
+  DeformResult r{m, 0.0, false, 0, 0, 1.0, 0, m.num_elements_2d()};
   // The prescribed dofs are the same at every increment: one pattern, one
   // symbolic analysis. A halved increment keeps the mesh, hence the stiffness
   // and loads: it only needs new prescribed values (resolve).

@@ -12,6 +12,10 @@
 // deformed mesh), so each one is assembled and factorised anew on the same
 // pattern and symbolic analysis; a halved increment re-solves with the factor
 // it already has.
+//
+// Meshes of triangles, quadrilaterals or both: elements are named by their 2D
+// index (triangles 0..T-1, then quadrilaterals T..T+Q-1, core/mesh.h) in
+// regions and counts.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -46,16 +50,17 @@ struct DeformOptions {
   /// on large meshes, the result differs. Replaces `reach`.
   int layers = 0;
   /// 0: the elasticity is solved on the whole mesh. r > 0: only on the
-  /// triangles with a vertex within r h_t of the centroid of some triangle t
-  /// with a moving node, h_t its longest edge, the rest held still. The
+  /// elements with a vertex within r h_t of the corner centroid of some
+  /// element t with a moving node, h_t its longest edge, the rest held still. The
   /// displacement of a curved wall edge decays over about one edge length into
   /// the mesh (Saint-Venant), whatever the number of thin layer elements
   /// stacked there, so unlike `layers` the region does not shrink to a sliver
   /// in a boundary layer. Ignored when layers > 0.
   double reach = 2;
-  /// Non-empty: solve only on these triangles (ascending), the rest held still
-  /// but for the prescribed nodes in none of them, which go straight to their
-  /// targets; replaces layers and reach.
+  /// Non-empty: solve only on these 2D elements (ascending; triangles 0..T-1,
+  /// then quadrilaterals T..T+Q-1), the rest held still but for the prescribed
+  /// nodes in none of them, which go straight to their targets; replaces
+  /// layers and reach.
   std::vector<int> region;
 };
 
@@ -67,30 +72,36 @@ struct DeformResult {
   int iterations = 0;          ///< total CG iterations (0 for direct solvers)
   double worst_ratio = 1;      ///< worst certified minJ/maxJ of the result
   int invalid_at_failure = 0;  ///< invalid elements of the first rejected state, if it failed
-  int solved_triangles = 0;    ///< triangles the elasticity was posed on (layers, reach)
+  /// 2D elements (triangles and quadrilaterals) the elasticity was posed on
+  /// (layers, reach, region); the name predates quadrilaterals.
+  int solved_triangles = 0;
 };
 
 /// Deforms m so that each node i with prescribed[i] moves from m.x.col(i) to
-/// target.col(i); other nodes follow the elastic analogy. m must be valid.
-/// Throws homesh::Error on bad arguments (sizes, increments < 1, unknown
+/// target.col(i); other nodes follow the elastic analogy. m (triangles,
+/// quadrilaterals or both) must be valid. Throws homesh::Error on bad
+/// arguments (sizes, increments < 1, a region element out of range, unknown
 /// formulation) or a failed solve.
 DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
                          const std::vector<bool>& prescribed, const DeformOptions& opt = {});
 
-/// The triangles within `layers` >= 1 element layers of the nodes with
-/// moving[i]: layer 1 holds every triangle with a moving node, layer k + 1
-/// adds those sharing a node with layer k. Ascending triangle indices.
+/// The 2D elements within `layers` >= 1 element layers of the nodes with
+/// moving[i]: layer 1 holds every element with a moving node, layer k + 1
+/// adds those sharing a node with layer k. Ascending 2D element indices
+/// (triangles, then quadrilaterals).
 std::vector<int> moving_region(const Mesh& m, const std::vector<bool>& moving, int layers);
 
-/// The triangles with a vertex within reach * h_t of the centroid of some
-/// triangle t with a node where moving[i], h_t the longest vertex-to-vertex
-/// edge of t. Ascending triangle indices.
+/// The 2D elements with a vertex (corner) within reach * h_t of the corner
+/// centroid of some element t with a node where moving[i], h_t the longest
+/// corner-to-corner edge of t. Ascending 2D element indices (triangles, then
+/// quadrilaterals).
 std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, double reach);
 
 /// prescribed[i] = node i lies on a model point or curve (dim 0 or 1).
 std::vector<bool> boundary_nodes(const Mesh& m);
 
-/// vertex[i] = node i is a corner of some triangle (a node of the linear mesh).
+/// vertex[i] = node i is a corner of some triangle or quadrilateral (a node of
+/// the linear mesh).
 std::vector<bool> vertex_nodes(const Mesh& m);
 
 }  // namespace homesh

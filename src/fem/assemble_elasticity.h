@@ -11,9 +11,10 @@
 namespace homesh {
 
 struct AssemblyOptions {
-  /// Added to 2 (p - 1), the degree exact for straight elements with constant
-  /// coefficients (stiffness_quadrature_degree), for curved elements and
-  /// varying coefficients; the body force and thermal terms use the same rule.
+  /// Added to 2 (p - 1), the degree exact for straight triangles with constant
+  /// coefficients (stiffness_quadrature_degree), and to 2 p per variable, that
+  /// of parallelograms (quad_stiffness_quadrature_degree), for curved elements
+  /// and varying coefficients; the body force and thermal terms use the same rules.
   int quadrature_margin = 2;
 };
 
@@ -25,10 +26,13 @@ struct LinearSystem {
 };
 
 /// K (full storage, both triangles) and b summed from element_stiffness and
-/// element_load over the triangles of m (order m.order, nodes m.x, m.tri),
-/// with the coefficients c evaluated at every quadrature point of every
-/// element (QuadraturePoint{e, q, x_q}). Natural boundaries are traction free.
-/// Nodes in no triangle get the equation u = 0 (unit diagonal, zero load).
+/// element_load over the triangles and quadrilaterals of m (order m.order,
+/// nodes m.x, m.tri, m.quad), with the coefficients c evaluated at every
+/// quadrature point of every element (QuadraturePoint{e, q, x_q}, e the 2D
+/// element index: triangle e for e < T = #triangles, else quadrilateral
+/// e - T; q indexes the triangle's or the quadrilateral's rule).
+/// Natural boundaries are traction free. Nodes in no element get the
+/// equation u = 0 (unit diagonal, zero load).
 /// Throws homesh::Error naming the element if an element is invalid (det J
 /// vanishes or changes sign) or a coefficient is out of range.
 LinearSystem assemble_elasticity(const Mesh& m, const ElasticityCoefficients& c,

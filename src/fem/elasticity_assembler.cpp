@@ -13,31 +13,44 @@
 namespace homesh {
 namespace {
 
+// The nodes of every 2D element (triangles, then quadrilaterals), CSR.
+struct ElementNodes {
+  std::vector<int> start{0}, node;
+  int size() const { return int(start.size()) - 1; }
+};
+
+void append(ElementNodes& en, const Eigen::MatrixXi& elements) {
+  for (Eigen::Index e = 0; e < elements.cols(); ++e) {
+    for (Eigen::Index i = 0; i < elements.rows(); ++i) en.node.push_back(elements(i, e));
+    en.start.push_back(int(en.node.size()));
+  }
+}
+
 // Elements incident to each node, as offsets into a flat list (CSR).
 struct Incidence {
   std::vector<int> start, element;
 };
 
-Incidence node_elements(const Eigen::MatrixXi& tri, int num_nodes) {
+Incidence node_elements(const ElementNodes& en, int num_nodes) {
   Incidence inc;
   inc.start.assign(num_nodes + 1, 0);
-  for (Eigen::Index k = 0; k < tri.size(); ++k) ++inc.start[tri.data()[k] + 1];
+  for (int node : en.node) ++inc.start[node + 1];
   std::partial_sum(inc.start.begin(), inc.start.end(), inc.start.begin());
-  inc.element.resize(tri.size());
+  inc.element.resize(en.node.size());
   std::vector<int> next(inc.start.begin(), inc.start.end() - 1);
-  for (Eigen::Index e = 0; e < tri.cols(); ++e)
-    for (Eigen::Index i = 0; i < tri.rows(); ++i) inc.element[next[tri(i, e)]++] = int(e);
+  for (int e = 0; e < en.size(); ++e)
+    for (int k = en.start[e]; k < en.start[e + 1]; ++k) inc.element[next[en.node[k]]++] = e;
   return inc;
 }
 
 // Greedy colouring: each element takes the smallest colour none of the
 // elements sharing one of its nodes has taken.
-std::vector<std::vector<int>> colour_elements(const Eigen::MatrixXi& tri, const Incidence& inc) {
-  std::vector<int> colour(tri.cols(), -1), stamp;
+std::vector<std::vector<int>> colour_elements(const ElementNodes& en, const Incidence& inc) {
+  std::vector<int> colour(en.size(), -1), stamp;
   std::vector<std::vector<int>> classes;
-  for (int e = 0; e < int(tri.cols()); ++e) {
-    for (Eigen::Index i = 0; i < tri.rows(); ++i)
-      for (int k = inc.start[tri(i, e)]; k < inc.start[tri(i, e) + 1]; ++k) {
+  for (int e = 0; e < en.size(); ++e) {
+    for (int i = en.start[e]; i < en.start[e + 1]; ++i)
+      for (int k = inc.start[en.node[i]]; k < inc.start[en.node[i] + 1]; ++k) {
         const int c = colour[inc.element[k]];
         if (c >= 0) stamp[c] = e;
       }
@@ -54,20 +67,22 @@ std::vector<std::vector<int>> colour_elements(const Eigen::MatrixXi& tri, const 
 }
 
 // Sorted neighbours (nodes sharing an element, itself excluded) of every node.
-std::vector<std::vector<int>> node_neighbours(const Eigen::MatrixXi& tri, const Incidence& inc) {
+std::vector<std::vector<int>> node_neighbours(const ElementNodes& en, const Incidence& inc) {
   const int num_nodes = int(inc.start.size()) - 1;
   std::vector<std::vector<int>> out(num_nodes);
   std::vector<int> stamp(num_nodes, -1);
   for (int i = 0; i < num_nodes; ++i) {
     stamp[i] = i;
-    for (int k = inc.start[i]; k < inc.start[i + 1]; ++k)
-      for (Eigen::Index a = 0; a < tri.rows(); ++a) {
-        const int j = tri(a, inc.element[k]);
+    for (int k = inc.start[i]; k < inc.start[i + 1]; ++k) {
+      const int e = inc.element[k];
+      for (int a = en.start[e]; a < en.start[e + 1]; ++a) {
+        const int j = en.node[a];
         if (stamp[j] != i) {
           stamp[j] = i;
           out[i].push_back(j);
         }
       }
+    }
     std::sort(out[i].begin(), out[i].end());
   }
   return out;
@@ -152,13 +167,24 @@ void evaluate(const ElasticityCoefficients& c, int e, Workspace& w) {
 }  // namespace
 
 ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& fixed_dofs,
-                                         const AssemblyOptions& options)
-    : tri_(m.tri) {
-  const int n = triangle_node_count(m.order);
-  if (m.tri.rows() != n)
+                                         const AssemblyOptions& options) {
+  if (m.tri.rows() != triangle_node_count(m.order) && m.num_triangles() > 0)
     throw Error("assemble_elasticity: " + std::to_string(m.tri.rows()) +
                 " nodes per triangle for order " + std::to_string(m.order));
-  tab_ = tabulate_element(m.order, stiffness_quadrature_degree(m.order, options.quadrature_margin));
+  if (m.quad.rows() != quad_node_count(m.order) && m.num_quads() > 0)
+    throw Error("assemble_elasticity: " + std::to_string(m.quad.rows()) +
+                " nodes per quadrilateral for order " + std::to_string(m.order));
+  Kind& triangles = kinds_[0];
+  triangles.nodes = m.tri;
+  triangles.tab =
+      tabulate_element(m.order, stiffness_quadrature_degree(m.order, options.quadrature_margin));
+  num_triangles_ = m.num_triangles();
+  if (m.num_quads() > 0) {
+    Kind& quads = kinds_[1];
+    quads.nodes = m.quad;
+    quads.tab = tabulate_quad_element(
+        m.order, quad_stiffness_quadrature_degree(m.order, options.quadrature_margin));
+  }
   const int num_nodes = m.num_nodes();
   fixed_.assign(2 * num_nodes, 0);
   for (int j : fixed_dofs) {
@@ -167,11 +193,17 @@ ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& 
                   std::to_string(2 * num_nodes - 1));
     fixed_[j] = 1;
   }
+  ElementNodes en;
+  for (const Kind& kind : kinds_) append(en, kind.nodes);
+  for (int node : en.node)
+    if (node < 0 || node >= num_nodes)
+      throw Error("assemble_elasticity: node " + std::to_string(node) + " out of range 0.." +
+                  std::to_string(num_nodes - 1));
   used_.assign(num_nodes, 0);
-  for (Eigen::Index k = 0; k < tri_.size(); ++k) used_[tri_.data()[k]] = 1;
-  const Incidence inc = node_elements(tri_, num_nodes);
-  colours_ = colour_elements(tri_, inc);
-  dof_patterns(node_neighbours(tri_, inc), fixed_, pattern_, coupling_pattern_);
+  for (int node : en.node) used_[node] = 1;
+  const Incidence inc = node_elements(en, num_nodes);
+  colours_ = colour_elements(en, inc);
+  dof_patterns(node_neighbours(en, inc), fixed_, pattern_, coupling_pattern_);
 }
 
 namespace {
@@ -202,7 +234,6 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
   reset(sys.K, pattern_);
   reset(sys.coupling, coupling_pattern_);
   sys.load = Eigen::VectorXd::Zero(num_dofs);
-  const int n = int(tri_.rows());
   const int *outer = sys.K.outerIndexPtr(), *inner = sys.K.innerIndexPtr();
   const int *c_outer = sys.coupling.outerIndexPtr(), *c_inner = sys.coupling.innerIndexPtr();
   double* value = sys.K.valuePtr();
@@ -213,25 +244,35 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
   // One team for all colours; the implicit barrier of each loop separates them.
 #pragma omp parallel
   {
-    Workspace w;
-    w.X.resize(2, n);
-    w.dof.resize(2 * n);
-    w.order.resize(2 * n);
+    // One workspace per kind of element, sized once.
+    Workspace works[2];
+    for (int k = 0; k < 2; ++k) {
+      const int n = int(kinds_[k].nodes.rows());
+      works[k].X.resize(2, n);
+      works[k].dof.resize(2 * n);
+      works[k].order.resize(2 * n);
+    }
     for (const std::vector<int>& colour : colours_) {
 #pragma omp for schedule(static)
       for (std::size_t k = 0; k < colour.size(); ++k) {
-        const int e = colour[k];
+        const int e = colour[k];  // 2D element index: triangles, then quadrilaterals
+        const int kind = e < num_triangles_ ? 0 : 1;
+        const int local = e - (kind == 0 ? 0 : num_triangles_);
+        const Eigen::MatrixXi& nodes = kinds_[kind].nodes;
+        const ElementTabulation& tab = kinds_[kind].tab;
+        Workspace& w = works[kind];
+        const int n = int(nodes.rows());
         try {
           for (int i = 0; i < n; ++i) {
-            w.X.col(i) = x.col(tri_(i, e));
+            w.X.col(i) = x.col(nodes(i, local));
             // Element dof (c, i) at c n + i (Eq 4.14) is global dof 2 node + c.
-            w.dof[i] = 2 * tri_(i, e);
-            w.dof[n + i] = 2 * tri_(i, e) + 1;
+            w.dof[i] = 2 * nodes(i, local);
+            w.dof[n + i] = 2 * nodes(i, local) + 1;
           }
-          element_geometry(w.X, tab_, w.geometry);
+          element_geometry(w.X, tab, w.geometry);
           evaluate(c, e, w);
           element_stiffness_lower(w.geometry, w.lambda, w.mu, w.Ke, w.scratch);
-          element_load(w.geometry, tab_.N, w.f, w.sigma_t, w.fe);
+          element_load(w.geometry, tab.N, w.f, w.sigma_t, w.fe);
         } catch (const std::exception& error) {
 #pragma omp critical(homesh_assembly_failure)
           if (failed_element < 0 || e < failed_element) {
@@ -272,7 +313,12 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
     }
   }
   if (failed_element >= 0)
-    throw Error("assemble_elasticity: triangle " + std::to_string(failed_element) + ": " + failure);
+    throw Error("assemble_elasticity: " +
+                (failed_element < num_triangles_
+                     ? "triangle " + std::to_string(failed_element)
+                     : "quadrilateral " + std::to_string(failed_element - num_triangles_) +
+                           " (2D element " + std::to_string(failed_element) + ")") +
+                ": " + failure);
   for (int j = 0; j < num_dofs; ++j) {
     double& diagonal = value[outer[j]];
     if (!used_[j / 2] || (fixed_[j] && diagonal == 0.0)) diagonal = 1.0;

@@ -22,7 +22,7 @@ namespace homesh {
 struct EliminatedSystem {
   /// Lower triangle: the free-free entries of sum_e Ke, and every diagonal
   /// (fixed dof j: sum_e (Ke)_jj, 1 if no element holds it; free dofs of nodes
-  /// in no triangle: 1). Always the assembler's pattern.
+  /// in no triangle nor quadrilateral: 1). Always the assembler's pattern.
   Eigen::SparseMatrix<double> K;
   /// The free-fixed block of sum_e Ke: rows free dofs, columns fixed dofs.
   Eigen::SparseMatrix<double> coupling;
@@ -32,15 +32,20 @@ struct EliminatedSystem {
 
 class ElasticityAssembler {
  public:
-  /// The connectivity of m (order, tri, #nodes; its coordinates are not used)
-  /// and the prescribed dofs (2 node + component, as LinearSystem; repeats allowed).
-  /// Throws homesh::Error if tri does not fit the order or a dof is out of range.
+  /// The connectivity of m (order, tri, quad, #nodes; its coordinates are not
+  /// used) and the prescribed dofs (2 node + component, as LinearSystem;
+  /// repeats allowed). Triangles and quadrilaterals are summed into one system,
+  /// each at its own rule (tabulate_element, tabulate_quad_element); they are
+  /// the 2D elements e = 0..T-1 and T..T+Q-1 (core/mesh.h) of QuadraturePoint.
+  /// Throws homesh::Error if tri or quad does not fit the order, or a node or
+  /// a dof is out of range.
   ElasticityAssembler(const Mesh& m, const std::vector<int>& fixed_dofs,
                       const AssemblyOptions& options = {});
 
   /// Refills sys for positions x (2 by #nodes) and coefficients c evaluated at
   /// the quadrature points as in assemble_elasticity. Throws homesh::Error
-  /// naming the triangle if an element is invalid or a coefficient out of range.
+  /// naming the triangle or quadrilateral (the lowest 2D element index) if an
+  /// element is invalid or a coefficient out of range.
   void assemble(const Eigen::Matrix2Xd& x, const ElasticityCoefficients& c,
                 EliminatedSystem& sys) const;
 
@@ -50,14 +55,20 @@ class ElasticityAssembler {
 
   int num_dofs() const { return static_cast<int>(fixed_.size()); }
   const std::vector<char>& fixed() const { return fixed_; }
-  /// Colour classes: elements of one class share no node.
+  /// Colour classes of 2D element indices: elements of one class share no node.
   const std::vector<std::vector<int>>& colours() const { return colours_; }
 
  private:
-  Eigen::MatrixXi tri_;
-  ElementTabulation tab_;
+  // One kind of 2D element: its connectivity (nodes by elements) and the
+  // tabulation of its basis at its rule.
+  struct Kind {
+    Eigen::MatrixXi nodes;
+    ElementTabulation tab;
+  };
+  Kind kinds_[2];  // triangles, quadrilaterals (2D elements num_triangles_..)
+  int num_triangles_ = 0;
   std::vector<char> fixed_;  // per dof
-  std::vector<char> used_;   // per node: in some triangle
+  std::vector<char> used_;   // per node: in some triangle or quadrilateral
   std::vector<std::vector<int>> colours_;
   // Patterns (values unused): lower free-free plus diagonal; free-fixed.
   Eigen::SparseMatrix<double> pattern_, coupling_pattern_;

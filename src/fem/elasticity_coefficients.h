@@ -11,8 +11,10 @@
 
 namespace homesh {
 
-/// A quadrature point of element `element`: its index in the element's rule
-/// and its physical coordinates x = X N(u, v).
+/// A quadrature point of 2D element `element` (triangles 0..T-1, then
+/// quadrilaterals T..T+Q-1, core/mesh.h): its index in the element's rule
+/// (the triangle's or the quadrilateral's) and its physical coordinates
+/// x = X N(u, v).
 struct QuadraturePoint {
   int element = 0;
   int index = 0;
@@ -55,7 +57,8 @@ using ScalarCoefficient = Coefficient<double>;
 using VectorCoefficient = Coefficient<Eigen::Vector2d>;
 using TensorCoefficient = Coefficient<Eigen::Matrix2d>;
 
-/// One value per triangle: values(q.element). `values` has #triangles entries.
+/// One value per 2D element: values(q.element). `values` has #triangles +
+/// #quadrilaterals entries (triangles first, core/mesh.h).
 ScalarCoefficient per_element(Eigen::VectorXd values);
 
 /// The data of the elastic analogy with additional terms, Eqs 4.1-4.5:

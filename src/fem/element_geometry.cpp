@@ -16,7 +16,8 @@ ElementGeometry element_geometry(const Eigen::Matrix2Xd& X, const ElementTabulat
 
 void element_geometry(const Eigen::Matrix2Xd& X, const ElementTabulation& tab, ElementGeometry& g) {
   if (X.cols() != tab.N.rows())
-    throw Error("element_geometry: " + std::to_string(X.cols()) + " nodes for order " +
+    throw Error("element_geometry: " + std::to_string(X.cols()) + " nodes for a " +
+                (tab.quad ? "quadrilateral" : "triangle") + " of order " +
                 std::to_string(tab.order));
   const Eigen::Index n = tab.N.rows(), nq = tab.N.cols();
   g.x.resize(2, nq);

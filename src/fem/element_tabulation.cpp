@@ -4,7 +4,9 @@
 
 #include "core/error.h"
 #include "element/lagrange_basis.h"
+#include "element/quad_lagrange_basis.h"
 #include "element/reference_nodes.h"
+#include "element/square_quadrature.h"
 
 namespace homesh {
 
@@ -19,6 +21,23 @@ ElementTabulation tabulate_element(int order, int quadrature_degree) {
   ElementTabulation tab;
   tab.order = order;
   tab.rule = triangle_quadrature(quadrature_degree);
+  tab.N = basis.tabulate_values(tab.rule.points);
+  basis.tabulate_gradients(tab.rule.points, tab.dNdu, tab.dNdv);
+  return tab;
+}
+
+int quad_stiffness_quadrature_degree(int order, int margin) {
+  if (margin < 0)
+    throw Error("quad_stiffness_quadrature_degree: margin " + std::to_string(margin) + " < 0");
+  return 2 * order + margin;
+}
+
+ElementTabulation tabulate_quad_element(int order, int quadrature_degree) {
+  const QuadLagrangeBasis basis(order);
+  ElementTabulation tab;
+  tab.order = order;
+  tab.quad = true;
+  tab.rule = square_quadrature(quadrature_degree);
   tab.N = basis.tabulate_values(tab.rule.points);
   basis.tabulate_gradients(tab.rule.points, tab.dNdu, tab.dNdv);
   return tab;

@@ -2,12 +2,17 @@
 // Meshes, exact fields and error norms shared by the fem tests.
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "core/mesh.h"
 #include "core/raise_order.h"
+#include "element/quad_reference_nodes.h"
+#include "element/reference_nodes.h"
 #include "fem/element_geometry.h"
 #include "fem/element_tabulation.h"
 
@@ -33,6 +38,98 @@ inline Mesh unit_square(int n, int p) {
   }
   m.tri_entity.assign(m.tri.cols(), 1);
   return raise_order(m, p);
+}
+
+// n by n cells of the unit square [0, 1]^2 at order p, straight-sided: the
+// cells of the first `quad_columns` columns (x < quad_columns / n) are
+// quadrilaterals, the others are cut along their diagonal into two triangles
+// (as unit_square), all counter-clockwise. The high-order nodes are the images
+// of the reference nodes (affine on a triangle, bilinear on a quadrilateral),
+// shared between elements. Boundary nodes are classified on curves (dim 1),
+// the four corners of the square on points (dim 0). With `corner_map`, the
+// cell corners go to corner_map(corner) and every element stays
+// straight-sided between them (its other nodes interpolated as above): a
+// structured mixed mesh of another domain, its nodes classified by their
+// position on the square.
+inline Mesh mixed_square(
+    int n, int p, int quad_columns,
+    const std::function<Eigen::Vector2d(const Eigen::Vector2d&)>& corner_map = nullptr) {
+  Mesh m;
+  m.order = p;
+  std::map<std::pair<long, long>, int> index;  // node at (i, j) / (n p)
+  std::vector<Eigen::Vector2d> x, mapped;
+  // Node at y of the square, at z once mapped.
+  auto node = [&](const Eigen::Vector2d& y, const Eigen::Vector2d& z) {
+    const std::pair<long, long> key(std::lround(y(0) * n * p), std::lround(y(1) * n * p));
+    const auto it = index.find(key);
+    if (it != index.end()) return it->second;
+    x.push_back(Eigen::Vector2d(double(key.first), double(key.second)) / double(n * p));
+    mapped.push_back(z);
+    return index[key] = int(x.size()) - 1;
+  };
+  auto map = [&](const Eigen::Vector2d& y) { return corner_map ? corner_map(y) : y; };
+  const Eigen::Matrix2Xd tri_ref = reference_nodes(p), quad_ref = quad_reference_nodes(p);
+  std::vector<Eigen::VectorXi> tris, quads;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector2d a(double(i) / n, double(j) / n), b(double(i + 1) / n, double(j) / n),
+          c(double(i + 1) / n, double(j + 1) / n), d(double(i) / n, double(j + 1) / n);
+      const Eigen::Vector2d A = map(a), B = map(b), C = map(c), D = map(d);
+      if (i < quad_columns) {
+        Eigen::VectorXi q(quad_ref.cols());
+        for (Eigen::Index k = 0; k < quad_ref.cols(); ++k) {
+          const double u = quad_ref(0, k), v = quad_ref(1, k);
+          auto bilinear = [u, v](const Eigen::Vector2d& w00, const Eigen::Vector2d& w10,
+                                 const Eigen::Vector2d& w11, const Eigen::Vector2d& w01) {
+            return Eigen::Vector2d((1 - u) * (1 - v) * w00 + u * (1 - v) * w10 + u * v * w11 +
+                                   (1 - u) * v * w01);
+          };
+          q(k) = node(bilinear(a, b, c, d), bilinear(A, B, C, D));
+        }
+        quads.push_back(q);
+        continue;
+      }
+      for (const auto& corners : {std::array<Eigen::Vector2d, 6>{a, b, c, A, B, C},
+                                  std::array<Eigen::Vector2d, 6>{a, c, d, A, C, D}}) {
+        Eigen::VectorXi t(tri_ref.cols());
+        for (Eigen::Index k = 0; k < tri_ref.cols(); ++k) {
+          const double u = tri_ref(0, k), v = tri_ref(1, k);
+          t(k) = node(corners[0] + u * (corners[1] - corners[0]) + v * (corners[2] - corners[0]),
+                      corners[3] + u * (corners[4] - corners[3]) + v * (corners[5] - corners[3]));
+        }
+        tris.push_back(t);
+      }
+    }
+  // Number the nodes by position ((i, j) lexicographic), whatever the cells'
+  // kinds: two such meshes of one n and p have the same nodes.
+  std::vector<int> rank(x.size());
+  std::vector<Eigen::Vector2d> position(x.size());
+  int next = 0;
+  for (const auto& entry : index) {
+    x[std::size_t(next)] =
+        Eigen::Vector2d(double(entry.first.first), double(entry.first.second)) / double(n * p);
+    position[std::size_t(next)] =
+        corner_map ? mapped[std::size_t(entry.second)] : x[std::size_t(next)];
+    rank[std::size_t(entry.second)] = next++;
+  }
+  for (auto* elements : {&tris, &quads})
+    for (Eigen::VectorXi& e : *elements)
+      for (Eigen::Index k = 0; k < e.size(); ++k) e(k) = rank[std::size_t(e(k))];
+  m.x.resize(2, Eigen::Index(x.size()));
+  for (std::size_t k = 0; k < x.size(); ++k) m.x.col(Eigen::Index(k)) = position[k];
+  m.node_class.resize(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const bool on_x = x[k](0) < 1e-12 || x[k](0) > 1 - 1e-12;
+    const bool on_y = x[k](1) < 1e-12 || x[k](1) > 1 - 1e-12;
+    m.node_class[k].dim = on_x && on_y ? 0 : on_x || on_y ? 1 : 2;
+  }
+  m.tri.resize(triangle_node_count(p), Eigen::Index(tris.size()));
+  for (std::size_t e = 0; e < tris.size(); ++e) m.tri.col(Eigen::Index(e)) = tris[e];
+  m.quad.resize(quad_node_count(p), Eigen::Index(quads.size()));
+  for (std::size_t e = 0; e < quads.size(); ++e) m.quad.col(Eigen::Index(e)) = quads[e];
+  m.tri_entity.assign(tris.size(), 1);
+  m.quad_entity.assign(quads.size(), 1);
+  return m;
 }
 
 // Nodes of the unit square on its boundary (before any perturbation).
@@ -76,15 +173,21 @@ struct ErrorNorms {
 };
 
 // Errors of the nodal displacement U (2 by #nodes) against the exact field, by
-// a rule of degree 2p + 8 on each element.
+// a rule of degree 2p + 8 on each element (per variable on quadrilaterals).
 inline ErrorNorms error_norms(const Mesh& m, const Eigen::Matrix2Xd& U, const VectorField& u,
                               const Gradient& grad, double lambda, double mu) {
-  const ElementTabulation tab = tabulate_element(m.order, 2 * m.order + 8);
+  const ElementTabulation tri_tab = tabulate_element(m.order, 2 * m.order + 8);
+  const ElementTabulation quad_tab = tabulate_quad_element(m.order, 2 * m.order + 8);
   double l2 = 0.0, energy = 0.0;
-  Eigen::Matrix2Xd Ue(2, m.tri.rows());
-  for (int e = 0; e < m.num_triangles(); ++e) {
-    const ElementGeometry g = element_geometry(m.triangle_nodes(e), tab);
-    for (Eigen::Index i = 0; i < m.tri.rows(); ++i) Ue.col(i) = U.col(m.tri(i, e));
+  for (int e = 0; e < m.num_elements_2d(); ++e) {
+    const bool quad = e >= m.num_triangles();
+    const int local = quad ? e - m.num_triangles() : e;
+    const ElementTabulation& tab = quad ? quad_tab : tri_tab;
+    const Eigen::MatrixXi& nodes = quad ? m.quad : m.tri;
+    const ElementGeometry g =
+        element_geometry(quad ? m.quad_nodes(local) : m.triangle_nodes(local), tab);
+    Eigen::Matrix2Xd Ue(2, nodes.rows());
+    for (Eigen::Index i = 0; i < nodes.rows(); ++i) Ue.col(i) = U.col(nodes(i, local));
     const Eigen::Matrix2Xd uh = Ue * tab.N;
     const Eigen::Matrix2Xd dx = Ue * g.dNdx, dy = Ue * g.dNdy;
     for (Eigen::Index q = 0; q < g.x.cols(); ++q) {
