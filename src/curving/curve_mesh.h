@@ -6,6 +6,11 @@
 // 1. Placed: if the mesh with only the boundary nodes moved (the interior
 //    straight, as Gmsh's setOrder leaves it) is certified valid with every
 //    minJ/maxJ at least `accept_placed`, it is the result (no solve).
+//    Quadrilaterals: every bar here (accept_placed, polish, the optimiser's
+//    threshold) is, for a quadrilateral, at most its straight-sided minJ/maxJ
+//    less 0.01: a linear trapezium (a fan's layer cell, 1 / (1 + ratio)) is
+//    kept, not solved for in vain; ties of the worst are broken by the least
+//    margin over those bars.
 // 2. Elastic: the interior follows the augmented elastic analogy
 //    (deform_mesh.h) with every element certified valid. With
 //    fixed_vertices the linear mesh's interior vertices are held where they
@@ -108,7 +113,9 @@ struct CurveResult {
   bool polished = false;           ///< step 1's guess sufficed, then solved round its poorest
   std::string guess = "straight";  ///< step 1's guess kept: straight, blended or propagated
   double placed_worst = 0;         ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
-  DeformResult deform;             ///< of the last solve (if any)
+  /// Step 1's guess met accept_placed (each quadrilateral: its straight-sided ratio, if lower).
+  bool placed_met = false;
+  DeformResult deform;  ///< of the last solve (if any)
   /// The result comes from step 1's valid guess, not the solve: the solve fell short of it
   /// (incomplete, or poorer), and the guess was kept or optimised better than the solve.
   bool guess_over_solve = false;
