@@ -279,7 +279,7 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
         added.add({p.nodes[0], p.nodes[1], q.nodes[1]}, surface, 1);
         for (int k = 2; k <= n; ++k)
           add_quad(out.x, p.nodes[k - 1], p.nodes[k], q.nodes[k], q.nodes[k - 1], surface, k,
-                   opt.quads, added);
+                   /*quads=*/false, added);
       }
     }
     first_line += start[size];

@@ -115,7 +115,8 @@ Stage layers_stage() {
         "corners), with a warning");
   t.add("cells", &LayerOptions::quads, choice<bool>({{"triangles", false}, {"quads", true}}),
         "triangles | quads: the layer cells split into two triangles each, or kept as "
-        "quadrilaterals (a fan's cell at the wall stays a triangle)");
+        "quadrilaterals along the wall edges (fans at sharp wall nodes stay triangles: their "
+        "quads would be trapezia of minJ/maxJ 1 / (1 + ratio))");
   t.add(
       "normals", [](LayerOptions& o) -> bool& { return o.normals.multi; },
       choice<bool>({{"single", false}, {"multi", true}}),
