@@ -395,6 +395,18 @@ def reuse(csv_path, other, pattern):
     print(f"reuse: {added} rows of '{pattern}' from {other}")
 
 
+def append_row(csv_path, fields, row, res, width):
+    """Completes row from the method's result res, appends it to the CSV and prints it (the
+    method's name padded to width)."""
+    row.update({k: res.get(k, "") for k in fields if k not in row})
+    with open(csv_path, "a", newline="") as f:
+        csv.DictWriter(f, fieldnames=fields).writerow(row)
+    w = f"{row['worst']:.4f}" if isinstance(row["worst"], float) else row["worst"]
+    s = f"{row['seconds']:.3f}" if isinstance(row["seconds"], float) else row["seconds"]
+    print(f"   p={row['p']} {row['method']:<{width}} {row['status']:<8} inv {row['invalid']!s:<4} "
+          f"worst {w:<8} {s:>8} s {row['error'][:70]}", flush=True)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--cases", help="comma-separated case name patterns (substring or glob)")
@@ -463,13 +475,7 @@ def main(argv=None):
             r = r or rec
             row = dict(case=c.name, mesher=c.mesher, triangles=r["triangles"],
                        turn_deg=r["turn_deg"], target=r["target"], p=p, method=m)
-            row.update({k: res.get(k, "") for k in FIELDS if k not in row})
-            with open(csv_path, "a", newline="") as f:
-                csv.DictWriter(f, fieldnames=FIELDS).writerow(row)
-            w = f"{row['worst']:.4f}" if isinstance(row["worst"], float) else row["worst"]
-            s = f"{row['seconds']:.3f}" if isinstance(row["seconds"], float) else row["seconds"]
-            print(f"   p={p} {m:<17} {row['status']:<8} inv {row['invalid']!s:<4} worst {w:<8} "
-                  f"{s:>8} s {row['error'][:70]}", flush=True)
+            append_row(csv_path, FIELDS, row, res, 17)
     report(csv_path, args.out)
     return 0
 

@@ -53,7 +53,7 @@ sys.path.insert(0, HERE)
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
 import corpus  # noqa: E402
-from curving_corpus import curved_to, first_line, prepare  # noqa: E402
+from curving_corpus import append_row, curved_to, first_line, prepare  # noqa: E402
 
 METHODS = {
     "homesh": None,
@@ -414,13 +414,7 @@ def main(argv=None):
             row = dict(case=c.name, mesher=c.mesher, triangles=r["triangles"], quads=r["quads"],
                        turn_deg=r["turn_deg"], linear_worst=r.get("linear_worst", ""), p=p,
                        method=m)
-            row.update({k: res.get(k, "") for k in FIELDS if k not in row})
-            with open(csv_path, "a", newline="") as f:
-                csv.DictWriter(f, fieldnames=FIELDS).writerow(row)
-            w = f"{row['worst']:.4f}" if isinstance(row["worst"], float) else row["worst"]
-            s = f"{row['seconds']:.3f}" if isinstance(row["seconds"], float) else row["seconds"]
-            print(f"   p={p} {m:<21} {row['status']:<8} inv {row['invalid']!s:<4} worst {w:<8} "
-                  f"{s:>8} s {row['error'][:70]}", flush=True)
+            append_row(csv_path, FIELDS, row, res, 21)
     report(csv_path, args.out)
     return 0
 

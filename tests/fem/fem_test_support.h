@@ -13,6 +13,7 @@
 #include "core/raise_order.h"
 #include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
+#include "fem/elasticity_coefficients.h"
 #include "fem/element_geometry.h"
 #include "fem/element_tabulation.h"
 
@@ -207,6 +208,35 @@ inline Eigen::Matrix2Xd interpolate(const Mesh& m, const VectorField& u) {
   Eigen::Matrix2Xd U(2, m.num_nodes());
   for (int i = 0; i < m.num_nodes(); ++i) U.col(i) = u(m.x.col(i));
   return U;
+}
+
+// The manufactured solution of the convergence tests (triangles and quadrilaterals).
+// u = (sin(pi x) sin(pi y), e^x cos y); with constant Lame constants
+// div sigma = mu lap(u) + (lambda + mu) grad(div u), so f = -div sigma with
+//   lap(u) = (-2 pi^2 sin(pi x) sin(pi y), 0),
+//   grad(div u) = (-pi^2 sin(pi x) sin(pi y) - e^x sin y, pi^2 cos(pi x) cos(pi y) - e^x cos y).
+inline Eigen::Vector2d manufactured_exact(const Eigen::Vector2d& p) {
+  const double x = p(0), y = p(1);
+  return {std::sin(M_PI * x) * std::sin(M_PI * y), std::exp(x) * std::cos(y)};
+}
+
+inline Eigen::Matrix2d manufactured_gradient(const Eigen::Vector2d& p) {
+  const double x = p(0), y = p(1);
+  Eigen::Matrix2d G;
+  G << M_PI * std::cos(M_PI * x) * std::sin(M_PI * y),
+      M_PI * std::sin(M_PI * x) * std::cos(M_PI * y), std::exp(x) * std::cos(y),
+      -std::exp(x) * std::sin(y);
+  return G;
+}
+
+inline Eigen::Vector2d manufactured_body_force(const Lame& l, const Eigen::Vector2d& p) {
+  const double x = p(0), y = p(1), pi2 = M_PI * M_PI;
+  const double ss = std::sin(M_PI * x) * std::sin(M_PI * y);
+  const Eigen::Vector2d laplacian(-2.0 * pi2 * ss, 0.0);
+  const Eigen::Vector2d grad_div(
+      -pi2 * ss - std::exp(x) * std::sin(y),
+      pi2 * std::cos(M_PI * x) * std::cos(M_PI * y) - std::exp(x) * std::cos(y));
+  return -(l.mu * laplacian + (l.lambda + l.mu) * grad_div);
 }
 
 }  // namespace homesh::fem_test

@@ -23,31 +23,6 @@ const Eigen::Vector2d kShift(0.01, -0.02);
 
 Eigen::Vector2d affine(const Eigen::Vector2d& x) { return kGradient * x + kShift; }
 
-// u = (sin(pi x) sin(pi y), e^x cos y) with its body force for constant
-// (lambda, mu), as manufactured_solution_test.cpp.
-Eigen::Vector2d exact(const Eigen::Vector2d& p) {
-  return {std::sin(M_PI * p(0)) * std::sin(M_PI * p(1)), std::exp(p(0)) * std::cos(p(1))};
-}
-
-Eigen::Matrix2d exact_gradient(const Eigen::Vector2d& p) {
-  const double x = p(0), y = p(1);
-  Eigen::Matrix2d G;
-  G << M_PI * std::cos(M_PI * x) * std::sin(M_PI * y),
-      M_PI * std::sin(M_PI * x) * std::cos(M_PI * y), std::exp(x) * std::cos(y),
-      -std::exp(x) * std::sin(y);
-  return G;
-}
-
-Eigen::Vector2d body_force(const Lame& l, const Eigen::Vector2d& p) {
-  const double x = p(0), y = p(1), pi2 = M_PI * M_PI;
-  const double ss = std::sin(M_PI * x) * std::sin(M_PI * y);
-  const Eigen::Vector2d laplacian(-2.0 * pi2 * ss, 0.0);
-  const Eigen::Vector2d grad_div(
-      -pi2 * ss - std::exp(x) * std::sin(y),
-      pi2 * std::cos(M_PI * x) * std::cos(M_PI * y) - std::exp(x) * std::cos(y));
-  return -(l.mu * laplacian + (l.lambda + l.mu) * grad_div);
-}
-
 // The 2 #nodes interleaved vectors of the three rigid motions at x.
 Eigen::MatrixXd rigid_motions(const Eigen::Matrix2Xd& x) {
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(2 * x.cols(), 3);
@@ -153,7 +128,7 @@ TEST_CASE("quads and mixed meshes: L2 error at rate p + 1, energy error at rate 
   const Lame l = lame_plane_strain(1.0, 0.3);
   ElasticityCoefficients c;
   c.poisson = 0.3;
-  c.body_force = [&l](const QuadraturePoint& q) { return body_force(l, q.x); };
+  c.body_force = [&l](const QuadraturePoint& q) { return manufactured_body_force(l, q.x); };
   for (int p = 1; p <= 3; ++p) {
     for (const bool all_quads : {true, false}) {
       ErrorNorms previous;
@@ -161,9 +136,10 @@ TEST_CASE("quads and mixed meshes: L2 error at rate p + 1, energy error at rate 
         Mesh m = mixed_square(n, p, all_quads ? n : n / 2);
         REQUIRE(m.num_quads() == (all_quads ? n * n : n * n / 2));
         DirichletBC bc;
-        for (int i : square_boundary(m)) bc.fix(i, exact(m.x.col(i)));
+        for (int i : square_boundary(m)) bc.fix(i, manufactured_exact(m.x.col(i)));
         const ElasticitySolution s = solve_elasticity(m, c, bc);
-        const ErrorNorms e = error_norms(m, s.u, exact, exact_gradient, l.lambda, l.mu);
+        const ErrorNorms e =
+            error_norms(m, s.u, manufactured_exact, manufactured_gradient, l.lambda, l.mu);
         if (n == 8) {
           INFO("p = " << p << (all_quads ? ", quads" : ", mixed") << ": L2 " << previous.l2
                       << " -> " << e.l2 << ", energy " << previous.energy << " -> " << e.energy);
@@ -184,14 +160,14 @@ TEST_CASE("quads against triangles: the two solutions on one domain agree as h -
   const Lame l = lame_plane_strain(1.0, 0.3);
   ElasticityCoefficients c;
   c.poisson = 0.3;
-  c.body_force = [&l](const QuadraturePoint& q) { return body_force(l, q.x); };
+  c.body_force = [&l](const QuadraturePoint& q) { return manufactured_body_force(l, q.x); };
   double previous = 0;
   for (int n : {4, 8}) {
     const Mesh quads = mixed_square(n, 2, n), triangles = mixed_square(n, 2, 0);
     REQUIRE(quads.num_nodes() == triangles.num_nodes());
     REQUIRE((quads.x - triangles.x).cwiseAbs().maxCoeff() == 0.0);
     DirichletBC bc;
-    for (int i : square_boundary(quads)) bc.fix(i, exact(quads.x.col(i)));
+    for (int i : square_boundary(quads)) bc.fix(i, manufactured_exact(quads.x.col(i)));
     const double difference =
         (solve_elasticity(quads, c, bc).u - solve_elasticity(triangles, c, bc).u)
             .cwiseAbs()
