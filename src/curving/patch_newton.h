@@ -46,14 +46,21 @@ struct SlidingNodes {
   }
 };
 
-/// One patch: its elements, its free nodes (ascending), each element's target
-/// inverse T (distortion_energy.h), and what the steps keep.
+/// Certified bounds of det J of 2D element e of m (triangle, or quadrilateral
+/// beyond the triangles) with nodes X.
+JacobianBounds element_jacobian_bounds(const Mesh& m, int e, const Eigen::Matrix2Xd& X,
+                                       const BoundsOptions& opt);
+
+/// One patch: its 2D elements (triangles, then quadrilaterals: core/mesh.h),
+/// its free nodes (ascending), each element's target inverse T
+/// (distortion_energy.h), and what the steps keep.
 struct PatchProblem {
   const Mesh* mesh = nullptr;
   const std::vector<int>* elements = nullptr;
   const std::vector<int>* free_nodes = nullptr;
   const std::vector<Eigen::Matrix2d>* targets = nullptr;
-  const ElementTabulation* tab = nullptr;
+  const ElementTabulation* tab = nullptr;       ///< of the triangles
+  const ElementTabulation* quad_tab = nullptr;  ///< of the quadrilaterals (if any)
   DistortionEnergyOptions energy;
   BoundsOptions bounds;
   /// No accepted step takes an element below this certified minJ/maxJ.
