@@ -146,14 +146,14 @@ TEST_CASE("optimise quads: a vertex shared by quadrilaterals and triangles", "[c
   // 4 by 4 cells, quadrilaterals in x < 1/2, triangles beyond; the vertex (1/2, 1/2) is a
   // corner of two quadrilaterals and of three triangles.
   const Eigen::Vector2d centre(0.5, 0.5), by(-0.07, 0.06);
-  for (int p : {2, 3}) {
+  for (int p : {1, 2, 3}) {
     CAPTURE(p);
     const Mesh m = displaced(4, p, 2, centre, by);
     const MeshValidity start = mesh_validity(m);
     REQUIRE(start.invalid == 0);
     OptimiseOptions opt;
     opt.free_vertices = true;
-    opt.threshold = 0.94;
+    opt.threshold = 0.93;
     const OptimiseResult r = optimise_mesh(m, boundary_nodes(m), opt);
     const MeshValidity after = mesh_validity(r.mesh);
     const int v = node_at(m, centre + by);
@@ -162,8 +162,8 @@ TEST_CASE("optimise quads: a vertex shared by quadrilaterals and triangles", "[c
     CHECK(after.invalid == 0);
     CHECK(r.worst_after == Approx(after.worst));
     CHECK(start.worst < 0.5);   // measured 0.48
-    CHECK(after.worst > 0.94);  // measured 0.953 (p = 2), 0.955 (p = 3)
+    CHECK(after.worst > 0.93);  // measured 0.936 (p = 1), 0.953 (p = 2), 0.955 (p = 3)
     CHECK(r.poor_after == 0);
-    CHECK((r.mesh.x.col(v) - centre).norm() < 0.8 * by.norm());  // measured 0.68, 0.75
+    CHECK((r.mesh.x.col(v) - centre).norm() < 0.8 * by.norm());  // measured 0.30, 0.68, 0.75
   }
 }
