@@ -1,5 +1,6 @@
 #include "curving/patch_newton.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -17,6 +18,13 @@ constexpr int kMaxHalvings = 12;  // of one step's length
 constexpr int kMaxDampings = 8;   // raises of lambda (x 10) before giving up
 constexpr double kFirstDamping = 1e-4;
 constexpr double kLeastDamping = 1e-8;  // below this after accepted steps: pure Newton
+
+// The symmetric matrix H with its negative eigenvalues set to 0.
+Eigen::MatrixXd positive_part(const Eigen::MatrixXd& H) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(H);
+  return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() *
+         eig.eigenvectors().transpose();
+}
 
 class PatchNewton {
  public:
@@ -96,7 +104,13 @@ class PatchNewton {
                 std::isfinite(Eh) ? Eigen::Vector2d((Gh.col(slots[b].k) - G.col(slots[b].k)) / h)
                                   : Eigen::Vector2d::Zero();
         }
-      const Eigen::MatrixXd Hd = P.transpose() * (0.5 * (Hl + Hl.transpose())) * P;
+      // A quadrilateral's projected onto the positive semi-definite matrices (see the
+      // header); a triangle's as it is (the same expression as before quadrilaterals came,
+      // so that triangle-only results stay bit for bit).
+      const Eigen::MatrixXd Hd =
+          elements_[le] < m_.num_triangles()
+              ? Eigen::MatrixXd(P.transpose() * (0.5 * (Hl + Hl.transpose())) * P)
+              : Eigen::MatrixXd(P.transpose() * positive_part(0.5 * (Hl + Hl.transpose())) * P);
       const Eigen::VectorXd gd = P.transpose() * gl;
       for (int r = 0; r < Hd.rows(); ++r) {
         g(dof[r]) += gd(r);
