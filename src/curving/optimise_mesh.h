@@ -37,23 +37,14 @@
 // its own tabulation (square Gauss rule plus the lattice of its det J's Bezier
 // coefficients) and its certificate from the tensor-product Bezier bounds.
 // Measured on issue 21's quad corpus (scripts/bench/quads_vs_gmsh.py, `curve`
-// with the quadrilaterals' nodes free in this step, vertices free), worst
-// minJ/maxJ p = 2 / 3 / 4 from the linear mesh's: plate_holes_quads 0.198 ->
-// 0.891 / 0.892 / 0.877 (0.9 / 9 / 25 s), circle_blq_1e-3_allquads 0.224 ->
-// 0.852 / 0.875 / 0.875 (1.6 / 11 / 32 s), star1_blq_1e-3_allquads 0.212 ->
-// 0.897 / 0.876 / 0.866 (4 / 18 / 63 s): every Gmsh method stays at the linear
-// worst; mixed boundary layers naca0012_blq_1e-3_coarse 0.455 -> 0.906 / 0.886,
-// naca23012_blq_1e-5 0.435 -> 0.805 / 0.829 (0.5 / 1.5 s).
-//
-// Boundary nodes: nodes on model points are held; nodes on a curve slide along
-// it by parameter where a CurveEvaluator is given and says the curve slides
-// (Toulorge et al. Sec 3.3, Turner et al. Sec 5): a node's move is a Newton
-// step in u on the energy of x = C(u), dE/du = dE/dx . C'(u), the second
-// derivative by differences of that, backtracked and certified as above, so
-// a sliding node is at C(u) exactly (its classification's u updated). Other
-// boundary nodes are held. Elements not certified valid are never repaired
-// (no untangling): their nodes are held, the patches round them are optimised
-// as usual.
+// with the quadrilaterals' nodes free in this step, vertices free; machine
+// loaded, times noisy), worst minJ/maxJ p = 2 / 3 / 4 from the linear mesh's:
+// plate_holes_quads 0.198 -> 0.892 / 0.912 / 0.918 (1 / 6 / 30 s),
+// circle_blq_1e-3_allquads 0.224 -> 0.852 / 0.908 / 0.920 (1.2 / 7 / 31 s),
+// star1_blq_1e-3_allquads 0.212 -> 0.893 / 0.910 / 0.904 (1.7 / 14 / 71 s):
+// every Gmsh method stays at the linear worst; mixed boundary layers
+// naca0012_blq_1e-3_coarse 0.455 -> 0.906 / 0.886, naca23012_blq_1e-5 0.435
+// -> 0.805 / 0.829 (p = 2 / 3, 0.5 / 1.8 s).
 #include <vector>
 
 #include "core/mesh.h"
