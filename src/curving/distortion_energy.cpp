@@ -40,8 +40,11 @@ double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab
     if (!(d[i] > 0)) return kInf;
     A += w(i) * d[i];
   }
+  // The element's mean |J| is A over the reference element's area: 2 A on the
+  // triangle (area 1/2), A on the square.
+  const double mean = tab.quad ? 1.0 : 2.0;
   for (int i = 0; i < q; ++i)
-    if (d[i] <= opt.epsilon * 2 * A) return kInf;
+    if (d[i] <= opt.epsilon * mean * A) return kInf;
   const double detT = T.determinant();
   const Eigen::Matrix2d M = T * T.transpose();
   const double r = opt.r, alpha = opt.alpha;
@@ -57,13 +60,13 @@ double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab
   for (int i = 0; i < q; ++i) {
     const double w2 = (J[i] * T).squaredNorm();
     s[i] = w2 / (2 * d[i] * detT) - 1;
-    const double v = d[i] / (2 * A);
+    const double v = d[i] / (mean * A);
     const double z = 0.5 * (v + 1 / v) - 1;
     zprime[i] = 0.5 * (1 - 1 / (v * v));
     theta[i] = std::max(0.0, s[i] + alpha * z);
     theta_r1[i] = power_r1(theta[i]);
     N += w(i) * d[i] * theta_r1[i] * theta[i];
-    // d/dA of Theta_i through v_i = d_i / (2A): dv/dA = -v / A.
+    // d/dA of Theta_i through v_i = d_i / (mean A): dv/dA = -v / A.
     dN_dA += w(i) * d[i] * r * theta_r1[i] * alpha * zprime[i] * (-v / A);
   }
   const double E = N / A;
@@ -78,7 +81,7 @@ double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab
   for (int i = 0; i < q; ++i) {
     const Eigen::Matrix2d C = cofactor(J[i]);
     const Eigen::Matrix2d ds = J[i] * M / (d[i] * detT) - (s[i] + 1) / d[i] * C;
-    const Eigen::Matrix2d dtheta = ds + alpha * zprime[i] / (2 * A) * C;
+    const Eigen::Matrix2d dtheta = ds + alpha * zprime[i] / (mean * A) * C;
     const double tr = theta_r1[i] * theta[i], tr1 = r * theta_r1[i];
     const Eigen::Matrix2d G = w(i) * ((tr * C + d[i] * tr1 * dtheta) / A + coupling * C);
     Gu.col(i) = G.col(0);

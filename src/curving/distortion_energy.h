@@ -10,7 +10,7 @@
 //   Theta = Theta_shape + alpha * Theta_size,
 //   Theta_shape = |W|_F^2 / (2 det W) - 1        (1/Q7 - 1, Eq 3.41: conformal
 //                                                  distortion, 0 iff W is a similarity)
-//   Theta_size  = (v + 1/v) / 2 - 1,  v = |J_i| / (2 A_e)
+//   Theta_size  = (v + 1/v) / 2 - 1,  v = |J_i| / (2 A_e)   (|J_i| / A_e on a quadrilateral)
 //                                                 (1/Q13 - 1, Eq 3.45, Branets & Carey,
 //                                                  with V the element's mean |J|)
 //
@@ -27,6 +27,13 @@
 // element's size and orientation) or the element's own straight-sided
 // Jacobian (TMOP's target-matrix idea): then Theta_shape = 0 for the
 // straight-sided element, whatever its aspect ratio.
+//
+// Quadrilaterals (a tabulation with quad = true, fem/element_tabulation.h):
+// the same measure on the reference square [0, 1]^2, whose ideal element is
+// the unit square itself (W = J as in quality/mesh_quality.h: the ideal
+// target is T = I; the straight one, curving/optimise_mesh.h, is the inverse
+// of the Jacobian at the centre of the element's straight, bilinear shape,
+// exact for a parallelogram), the mean |J| being A_e (the square's area is 1).
 #include <Eigen/Core>
 
 #include "fem/element_tabulation.h"
@@ -47,11 +54,11 @@ struct DistortionEnergyOptions {
   double epsilon = 0.0;
 };
 
-/// E_e of the element with nodes X (2 by (p+1)(p+2)/2, Gmsh order) whose basis
-/// is tabulated in `tab`, with target inverse T (2 by 2, det T > 0). If
-/// `gradient` is given it receives dE_e/dX (2 by n, column k the derivative by
-/// node k's (x, y)), unless E_e is +infinity; with node >= 0 only that column
-/// (the others zero: what a node-by-node sweep needs, at a fraction of the cost).
+/// E_e of the element with nodes X (2 by (p+1)(p+2)/2, Gmsh order; a
+/// quadrilateral's 2 by (p+1)^2 if tab.quad) whose basis is tabulated in `tab`, with target inverse
+/// T (2 by 2, det T > 0). If `gradient` is given it receives dE_e/dX (2 by n, column k the
+/// derivative by node k's (x, y)), unless E_e is +infinity; with node >= 0 only that column (the
+/// others zero: what a node-by-node sweep needs, at a fraction of the cost).
 double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
                          const Eigen::Matrix2d& T, const DistortionEnergyOptions& opt,
                          Eigen::Matrix2Xd* gradient = nullptr, int node = -1);

@@ -1,12 +1,13 @@
 #include "curving/optimisation_patches.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace homesh {
 namespace {
 
-// Triangles around each node, compressed rows: node i's are tris[start[i], start[i + 1]).
+// 2D elements around each node, compressed rows: node i's are tris[start[i], start[i + 1]).
 struct NodeTriangles {
   std::vector<int> start, tris;
 };
@@ -14,13 +15,13 @@ struct NodeTriangles {
 NodeTriangles node_triangles(const Mesh& m) {
   NodeTriangles a;
   a.start.assign(m.num_nodes() + 1, 0);
-  for (int e = 0; e < m.num_triangles(); ++e)
-    for (int k = 0; k < m.tri.rows(); ++k) ++a.start[m.tri(k, e) + 1];
+  for (int e = 0; e < m.num_elements_2d(); ++e)
+    for (int i : element_node_indices(m, e)) ++a.start[i + 1];
   std::partial_sum(a.start.begin(), a.start.end(), a.start.begin());
   a.tris.resize(a.start.back());
   std::vector<int> next(a.start.begin(), a.start.end() - 1);
-  for (int e = 0; e < m.num_triangles(); ++e)
-    for (int k = 0; k < m.tri.rows(); ++k) a.tris[next[m.tri(k, e)]++] = e;
+  for (int e = 0; e < m.num_elements_2d(); ++e)
+    for (int i : element_node_indices(m, e)) a.tris[next[i]++] = e;
   return a;
 }
 
@@ -31,10 +32,25 @@ int find(std::vector<int>& parent, int i) {
 
 }  // namespace
 
+std::pair<double, double> element_lengths(const Mesh& m, const Eigen::Matrix2Xd& x, int e) {
+  const auto nodes = element_node_indices(m, e);
+  const Eigen::Vector2d a = x.col(nodes(0)), b = x.col(nodes(1)), c = x.col(nodes(2));
+  if (e < m.num_triangles()) {
+    const double edge = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const double area2 = std::abs((b - a)(0) * (c - a)(1) - (b - a)(1) * (c - a)(0));
+    return {area2 / edge, edge};
+  }
+  const Eigen::Vector2d d = x.col(nodes(3));
+  const double edge = std::max({(b - a).norm(), (c - b).norm(), (d - c).norm(), (a - d).norm()});
+  // Twice the area of the straight quadrilateral: the cross product of its diagonals.
+  const double area2 = std::abs((c - a)(0) * (d - b)(1) - (c - a)(1) * (d - b)(0));
+  return {0.5 * area2 / edge, edge};
+}
+
 std::vector<OptimisationPatch> optimisation_patches(const Mesh& m, const std::vector<bool>& poor,
                                                     int layers, const std::vector<bool>& held) {
   const NodeTriangles around = node_triangles(m);
-  const int nt = m.num_triangles(), n = static_cast<int>(m.tri.rows());
+  const int nt = m.num_elements_2d();
   std::vector<char> in(nt, 0);
   std::vector<int> front;
   for (int e = 0; e < nt; ++e)
@@ -45,8 +61,7 @@ std::vector<OptimisationPatch> optimisation_patches(const Mesh& m, const std::ve
   for (int layer = 0; layer < layers && !front.empty(); ++layer) {
     std::vector<int> grown;
     for (int e : front)
-      for (int k = 0; k < n; ++k) {
-        const int i = m.tri(k, e);
+      for (int i : element_node_indices(m, e)) {
         for (int j = around.start[i]; j < around.start[i + 1]; ++j)
           if (!in[around.tris[j]]) {
             in[around.tris[j]] = 1;
@@ -55,7 +70,7 @@ std::vector<OptimisationPatch> optimisation_patches(const Mesh& m, const std::ve
       }
     front.swap(grown);
   }
-  // Free nodes: not held, every triangle round them in the set; they join their triangles.
+  // Free nodes: not held, every element round them in the set; they join their elements.
   std::vector<int> parent(nt);
   std::iota(parent.begin(), parent.end(), 0);
   std::vector<char> is_free(m.num_nodes(), 0);
@@ -83,8 +98,8 @@ std::vector<OptimisationPatch> optimisation_patches(const Mesh& m, const std::ve
   }
   for (OptimisationPatch& p : patches) {
     for (int e : p.elements)
-      for (int k = 0; k < n; ++k)
-        if (is_free[m.tri(k, e)]) p.free_nodes.push_back(m.tri(k, e));
+      for (int i : element_node_indices(m, e))
+        if (is_free[i]) p.free_nodes.push_back(i);
     std::sort(p.free_nodes.begin(), p.free_nodes.end());
     p.free_nodes.erase(std::unique(p.free_nodes.begin(), p.free_nodes.end()), p.free_nodes.end());
   }

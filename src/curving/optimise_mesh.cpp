@@ -30,13 +30,24 @@ class PatchOptimiser {
   // take an element below.
   PatchOptimiser(const Mesh& m, Eigen::Matrix2Xd& x, SlidingNodes& sliding,
                  const OptimisationPatch& patch, const ElementTabulation& tab,
-                 const OptimiseOptions& opt, double floor)
-      : m_(m), x_(x), sliding_(sliding), patch_(patch), tab_(tab), opt_(opt), floor_(floor) {
+                 const ElementTabulation& quad_tab, const OptimiseOptions& opt, double floor)
+      : m_(m),
+        x_(x),
+        sliding_(sliding),
+        patch_(patch),
+        tab_(tab),
+        quad_tab_(quad_tab),
+        opt_(opt),
+        floor_(floor) {
     const int ne = static_cast<int>(patch.elements.size());
     target_.resize(ne);
     energy_.resize(ne);
     for (int le = 0; le < ne; ++le) {
       const int e = patch.elements[le];
+      if (e >= m.num_triangles()) {
+        target_[le] = quad_target(m.quad.col(e - m.num_triangles()));
+        continue;
+      }
       Eigen::Matrix2d J_lin;
       J_lin.col(0) = x_.col(m.tri(1, e)) - x_.col(m.tri(0, e));
       J_lin.col(1) = x_.col(m.tri(2, e)) - x_.col(m.tri(0, e));
@@ -53,12 +64,14 @@ class PatchOptimiser {
     star_.resize(free.size());
     visited_.assign(patch.free_nodes.size(), -1);
     changed_.assign(ne, 0);
-    for (int le = 0; le < ne; ++le)
-      for (int k = 0; k < m.tri.rows(); ++k) {
-        const int node = m.tri(k, patch.elements[le]);
+    for (int le = 0; le < ne; ++le) {
+      const auto nodes = element_node_indices(m, patch.elements[le]);
+      for (int k = 0; k < nodes.size(); ++k) {
+        const int node = nodes(k);
         const auto it = std::lower_bound(free.begin(), free.end(), node);
         if (it != free.end() && *it == node) star_[it - free.begin()].push_back({le, k});
       }
+    }
   }
 
   const std::vector<Eigen::Matrix2d>& targets() const { return target_; }
@@ -92,17 +105,34 @@ class PatchOptimiser {
     int node;     // node slot in the element
   };
 
+  // Target inverse of a quadrilateral with node indices q: the unit square (W = J) for the
+  // ideal target; for the straight one the inverse Jacobian at the centre of its bilinear
+  // (corner) shape, which is its Jacobian everywhere for a parallelogram (so Theta_shape = 0
+  // for a straight parallelogram whatever its aspect ratio), the unit square where that
+  // turns clockwise.
+  Eigen::Matrix2d quad_target(Eigen::MatrixXi::ConstColXpr q) const {
+    if (opt_.target == OptimiseOptions::Target::straight) {
+      const Eigen::Vector2d a = x_.col(q(0)), b = x_.col(q(1)), c = x_.col(q(2)), d = x_.col(q(3));
+      Eigen::Matrix2d J_mid;
+      J_mid.col(0) = 0.5 * (b + c - a - d);
+      J_mid.col(1) = 0.5 * (c + d - a - b);
+      if (J_mid.determinant() > 0) return J_mid.inverse();
+    }
+    return Eigen::Matrix2d::Identity();
+  }
+
   // The nodes of patch element le, in a buffer reused by every call.
   const Eigen::Matrix2Xd& nodes(int le) const {
-    const int e = patch_.elements[le];
-    X_.resize(2, m_.tri.rows());
-    for (int k = 0; k < m_.tri.rows(); ++k) X_.col(k) = x_.col(m_.tri(k, e));
+    const auto n = element_node_indices(m_, patch_.elements[le]);
+    X_.resize(2, n.size());
+    for (int k = 0; k < n.size(); ++k) X_.col(k) = x_.col(n(k));
     return X_;
   }
 
   // Energy of patch element le and, if asked, its gradient by the element's node slot `node`.
   double element_energy(int le, Eigen::Matrix2Xd* gradient, int node = -1) const {
-    return distortion_energy(nodes(le), tab_, target_[le], opt_.energy, gradient, node);
+    const ElementTabulation& tab = patch_.elements[le] < m_.num_triangles() ? tab_ : quad_tab_;
+    return distortion_energy(nodes(le), tab, target_[le], opt_.energy, gradient, node);
   }
 
   // Energy of node i's star and its gradient by the node's position.
@@ -120,23 +150,20 @@ class PatchOptimiser {
   // Every element round node i certified valid with minJ/maxJ >= floor_.
   bool star_certified(int i) const {
     for (const Slot& s : star_[i]) {
-      const JacobianBounds b = jacobian_bounds(nodes(s.element), m_.order, opt_.bounds);
+      const JacobianBounds b =
+          element_jacobian_bounds(m_, patch_.elements[s.element], nodes(s.element), opt_.bounds);
       if (!b.valid_certified || scaled_jacobian_ratio(b) < floor_) return false;
     }
     return true;
   }
 
   // Length scales of node i's star: the smallest height and the longest edge of the
-  // straight triangles through its elements' corners.
+  // straight elements through its elements' corners (element_lengths).
   std::pair<double, double> star_lengths(int i) const {
     double height = std::numeric_limits<double>::infinity(), longest = 0;
     for (const Slot& s : star_[i]) {
-      const int e = patch_.elements[s.element];
-      const Eigen::Vector2d a = x_.col(m_.tri(0, e)), b = x_.col(m_.tri(1, e)),
-                            c = x_.col(m_.tri(2, e));
-      const double edge = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-      const double area2 = std::abs((b - a)(0) * (c - a)(1) - (b - a)(1) * (c - a)(0));
-      height = std::min(height, area2 / edge);
+      const auto [h, edge] = element_lengths(m_, x_, patch_.elements[s.element]);
+      height = std::min(height, h);
       longest = std::max(longest, edge);
     }
     return {height, longest};
@@ -255,7 +282,8 @@ class PatchOptimiser {
   Eigen::Matrix2Xd& x_;
   SlidingNodes& sliding_;
   const OptimisationPatch& patch_;
-  const ElementTabulation& tab_;
+  const ElementTabulation& tab_;       // of the triangles
+  const ElementTabulation& quad_tab_;  // of the quadrilaterals
   const OptimiseOptions& opt_;
   double floor_;
   std::vector<Eigen::Matrix2d> target_;
@@ -268,11 +296,12 @@ class PatchOptimiser {
   std::vector<long> changed_, visited_;
 };
 
-// Certified minJ/maxJ of triangle e with nodes at x; -infinity unless certified valid.
+// Certified minJ/maxJ of 2D element e with nodes at x; -infinity unless certified valid.
 double certified_ratio(const Mesh& m, const Eigen::Matrix2Xd& x, int e, const BoundsOptions& b) {
-  Eigen::Matrix2Xd X(2, m.tri.rows());
-  for (int k = 0; k < m.tri.rows(); ++k) X.col(k) = x.col(m.tri(k, e));
-  const JacobianBounds jb = jacobian_bounds(X, m.order, b);
+  const auto nodes = element_node_indices(m, e);
+  Eigen::Matrix2Xd X(2, nodes.size());
+  for (int k = 0; k < nodes.size(); ++k) X.col(k) = x.col(nodes(k));
+  const JacobianBounds jb = element_jacobian_bounds(m, e, X, b);
   return jb.valid_certified ? scaled_jacobian_ratio(jb) : -std::numeric_limits<double>::infinity();
 }
 
@@ -290,7 +319,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   if (static_cast<int>(fixed.size()) != m.num_nodes())
     throw Error("optimise_mesh: fixed has " + std::to_string(fixed.size()) + " entries for " +
                 std::to_string(m.num_nodes()) + " nodes");
-  if (m.order < 2) throw Error("optimise_mesh: the mesh must be of order 2 or more");
+  if (m.order < 1) throw Error("optimise_mesh: the mesh must be of order 1 or more");
   if (opt.layers < 0 || opt.max_sweeps < 0 || !(opt.tolerance >= 0) || !(opt.energy.r >= 1) ||
       !(opt.energy.alpha >= 0) || !(opt.energy.epsilon >= 0 && opt.energy.epsilon < 1))
     throw Error(
@@ -301,8 +330,8 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   res.mesh = m;
   const MeshValidity before = mesh_validity(m, opt.bounds);
   Eigen::VectorXd ratio = before.ratio;
-  std::vector<bool> valid(m.num_triangles()), poor(m.num_triangles());
-  for (int e = 0; e < m.num_triangles(); ++e) {
+  std::vector<bool> valid(m.num_elements_2d()), poor(m.num_elements_2d());
+  for (int e = 0; e < m.num_elements_2d(); ++e) {
     valid[e] = before.min_det(e) > 0;
     poor[e] = valid[e] && ratio(e) < opt.threshold;
     res.poor_before += poor[e];
@@ -335,13 +364,19 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   const std::vector<bool> boundary = boundary_nodes(m);
   for (int i = 0; i < m.num_nodes(); ++i)
     held[i] = held[i] || (sliding.tag[i] < 0 && (boundary[i] || (vertex[i] && !opt.free_vertices)));
-  for (int e = 0; e < m.num_triangles(); ++e)
+  for (int e = 0; e < m.num_elements_2d(); ++e)
     if (!valid[e])
-      for (int k = 0; k < m.tri.rows(); ++k) held[m.tri(k, e)] = true;
+      for (int i : element_node_indices(m, e)) held[i] = true;
   const std::vector<OptimisationPatch> patches = optimisation_patches(m, poor, opt.layers, held);
   res.patches = static_cast<int>(patches.size());
-  const ElementTabulation tab = tabulate_element_and_lattice(
-      m.order, opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order, opt.lattice_weight);
+  // The lattice of order 2 (p - 1) where a triangle's det J has its Bezier coefficients is
+  // a single point at p = 1 (det J constant): no lattice there.
+  const int degree = opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order;
+  const ElementTabulation tab =
+      tabulate_element_and_lattice(m.order, degree, m.order > 1 ? opt.lattice_weight : 0.0);
+  const ElementTabulation quad_tab =
+      m.num_quads() > 0 ? tabulate_quad_element_and_lattice(m.order, degree, opt.lattice_weight)
+                        : ElementTabulation{};
 
   Eigen::Matrix2Xd& x = res.mesh.x;
   std::vector<PatchOutcome> outcome(patches.size());
@@ -362,7 +397,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
       start.col(i) = x.col(patch.free_nodes[i]);
       start_u[i] = sliding.u[patch.free_nodes[i]];
     }
-    PatchOptimiser po(m, x, sliding, patch, tab, opt, worst);
+    PatchOptimiser po(m, x, sliding, patch, tab, quad_tab, opt, worst);
     PatchOutcome& o = outcome[k];
     o.energy_before = po.total_energy();
     if (opt.newton_iterations > 0) {
@@ -372,6 +407,7 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
       problem.free_nodes = &patch.free_nodes;
       problem.targets = &po.targets();
       problem.tab = &tab;
+      problem.quad_tab = &quad_tab;
       problem.energy = opt.energy;
       problem.bounds = opt.bounds;
       problem.floor = worst;

@@ -30,15 +30,21 @@
 //    back where they were.
 // Patches are independent and optimised in parallel (OpenMP).
 //
-// Boundary nodes: nodes on model points are held; nodes on a curve slide along
-// it by parameter where a CurveEvaluator is given and says the curve slides
-// (Toulorge et al. Sec 3.3, Turner et al. Sec 5): a node's move is a Newton
-// step in u on the energy of x = C(u), dE/du = dE/dx . C'(u), the second
-// derivative by differences of that, backtracked and certified as above, so
-// a sliding node is at C(u) exactly (its classification's u updated). Other
-// boundary nodes are held. Elements not certified valid are never repaired
-// (no untangling): their nodes are held, the patches round them are optimised
-// as usual.
+// Mixed meshes: elements are the 2D elements of core/mesh.h (triangles, then
+// quadrilaterals), patches grow through nodes shared by either kind, and a
+// quadrilateral's energy is the same measure on the reference square, whose
+// ideal element is the unit square (W = J; curving/distortion_energy.h), with
+// its own tabulation (square Gauss rule plus the lattice of its det J's Bezier
+// coefficients) and its certificate from the tensor-product Bezier bounds.
+// Measured on issue 21's quad corpus (scripts/bench/quads_vs_gmsh.py, `curve`
+// with the quadrilaterals' nodes free in this step, vertices free; machine
+// loaded, times noisy), worst minJ/maxJ p = 2 / 3 / 4 from the linear mesh's:
+// plate_holes_quads 0.198 -> 0.892 / 0.912 / 0.918 (1 / 6 / 30 s),
+// circle_blq_1e-3_allquads 0.224 -> 0.852 / 0.908 / 0.920 (1.2 / 7 / 31 s),
+// star1_blq_1e-3_allquads 0.212 -> 0.893 / 0.910 / 0.904 (1.7 / 14 / 71 s):
+// every Gmsh method stays at the linear worst; mixed boundary layers
+// naca0012_blq_1e-3_coarse 0.455 -> 0.906 / 0.886, naca23012_blq_1e-5 0.435
+// -> 0.805 / 0.829 (p = 2 / 3, 0.5 / 1.8 s).
 #include <vector>
 
 #include "core/mesh.h"
@@ -64,7 +70,7 @@ struct OptimiseOptions {
   int newton_iterations = 50;
   /// A Newton step lowering the patch energy by less than this fraction ends them.
   double newton_tolerance = 1e-2;
-  /// false: the linear mesh's vertices (triangle corners) are held, as `curve`
+  /// false: the linear mesh's vertices (element corners) are held, as `curve`
   /// holds them by default (boundary-layer heights kept exactly); only the
   /// nodes the order raising added move. true: interior vertices move too.
   bool free_vertices = false;
@@ -75,7 +81,9 @@ struct OptimiseOptions {
   enum class Slide { none, edge_nodes, all };
   Slide slide = Slide::all;
   /// Target of W = J * inv(J_target): the thesis' ideal equilateral element
-  /// (ideal) or each element's own straight-sided shape at the start (straight).
+  /// (ideal; the unit square for a quadrilateral) or each element's own straight-sided
+  /// shape at the start (straight; for a quadrilateral the parallelogram of its
+  /// bilinear shape's Jacobian at its centre).
   /// straight by default: against the ideal, a boundary-layer element of aspect
   /// ratio 1e4 has Theta_shape ~ 1e4, which the sweeps lower by bending it
   /// (minJ/maxJ 0.886 -> 1e-8 on the thin annulus of the tests, patch reverted).
@@ -83,9 +91,10 @@ struct OptimiseOptions {
   Target target = Target::straight;
   /// r, alpha and the barrier floor epsilon of the energy.
   DistortionEnergyOptions energy;
-  /// Gauss rule degree of the energy; 0: 2p.
+  /// Gauss rule degree of the energy (per variable on quadrilaterals); 0: 2p.
   int quadrature_degree = 0;
-  /// Share of the energy's weight on the nodes of the order 2(p - 1) lattice (corners
+  /// Share of the energy's weight on the nodes of the order 2(p - 1) lattice (2p - 1 on
+  /// quadrilaterals; none for p = 1 triangles, whose det J is constant; corners
   /// and edges included, where the Gauss points never are), 0: the Gauss rule alone.
   /// Measured on issue 16's corpus (Newton steps, worst minJ/maxJ, 0 / 0.2):
   /// ellipse10_bl_1e-4 p = 5 0.81 / 0.91 (p = 3: 0.87 either way); the worst point of a
@@ -101,7 +110,7 @@ struct OptimiseResult {
   Mesh mesh;                ///< the optimised mesh (nodes moved, nothing else changed)
   double worst_before = 1;  ///< worst certified minJ/maxJ of the input
   double worst_after = 1;   ///< of the result
-  int poor_before = 0;      ///< elements below the threshold (valid ones)
+  int poor_before = 0;      ///< 2D elements below the threshold (valid ones)
   int poor_after = 0;
   int invalid = 0;           ///< elements of the input not certified valid (left alone)
   int patches = 0;           ///< patches optimised
@@ -114,7 +123,8 @@ struct OptimiseResult {
   double energy_after = 0;
 };
 
-/// Optimises m (any order p >= 2, counter-clockwise elements) with the nodes
+/// Optimises m (triangles and quadrilaterals of any order p >= 1, counter-clockwise
+/// elements; at p = 1 only with free_vertices does a node move) with the nodes
 /// where fixed[i] (#nodes) held, and the boundary nodes on curves that
 /// `curves` slides (none if null) sliding as opt.slide says. Throws
 /// homesh::Error on a wrong `fixed` size or bad options.

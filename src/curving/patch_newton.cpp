@@ -1,11 +1,14 @@
 #include "curving/patch_newton.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
+
+#include "curving/optimisation_patches.h"
 
 namespace homesh {
 namespace {
@@ -16,6 +19,13 @@ constexpr int kMaxDampings = 8;   // raises of lambda (x 10) before giving up
 constexpr double kFirstDamping = 1e-4;
 constexpr double kLeastDamping = 1e-8;  // below this after accepted steps: pure Newton
 
+// The symmetric matrix H with its negative eigenvalues set to 0.
+Eigen::MatrixXd positive_part(const Eigen::MatrixXd& H) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(H);
+  return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() *
+         eig.eigenvectors().transpose();
+}
+
 class PatchNewton {
  public:
   PatchNewton(const PatchProblem& p, Eigen::Matrix2Xd& x, SlidingNodes& s)
@@ -24,14 +34,15 @@ class PatchNewton {
     first_.assign(nf + 1, 0);
     for (int i = 0; i < nf; ++i) first_[i + 1] = first_[i] + (sliding(i) ? 1 : 2);
     slots_.resize(elements_.size());
-    for (std::size_t le = 0; le < elements_.size(); ++le)
-      for (int k = 0; k < m_.tri.rows(); ++k) {
-        const int node = m_.tri(k, elements_[le]);
+    for (std::size_t le = 0; le < elements_.size(); ++le) {
+      const auto nodes = element_node_indices(m_, elements_[le]);
+      for (int k = 0; k < nodes.size(); ++k) {
+        const int node = nodes(k);
         const auto it = std::lower_bound(free_.begin(), free_.end(), node);
         if (it != free_.end() && *it == node)
           slots_[le].push_back({k, static_cast<int>(it - free_.begin())});
       }
-    X_.resize(2, m_.tri.rows());
+    }
   }
 
   int dofs() const { return first_.back(); }
@@ -41,7 +52,7 @@ class PatchNewton {
     double E = 0;
     for (std::size_t le = 0; le < elements_.size(); ++le) {
       if (slots_[le].empty()) continue;
-      E += distortion_energy(gather(le), *p_.tab, (*p_.targets)[le], p_.energy);
+      E += distortion_energy(gather(le), tab(le), (*p_.targets)[le], p_.energy);
       if (!std::isfinite(E)) return E;
     }
     return E;
@@ -62,7 +73,8 @@ class PatchNewton {
       if (L == 0) continue;
       Eigen::Matrix2Xd X = gather(le);
       const Eigen::Matrix2d& T = (*p_.targets)[le];
-      distortion_energy(X, *p_.tab, T, p_.energy, &G);
+      const ElementTabulation& et = tab(le);
+      distortion_energy(X, et, T, p_.energy, &G);
       // Local coordinates (2 per slot) to dofs: the identity, or a sliding node's tangent.
       std::vector<int> dof;
       for (const Slot& a : slots)
@@ -85,14 +97,20 @@ class PatchNewton {
         for (int c = 0; c < 2; ++c) {
           const double old = X(c, slots[a].k);
           X(c, slots[a].k) = old + h;
-          const double Eh = distortion_energy(X, *p_.tab, T, p_.energy, &Gh);
+          const double Eh = distortion_energy(X, et, T, p_.energy, &Gh);
           X(c, slots[a].k) = old;
           for (int b = 0; b < L; ++b)
             Hl.block<2, 1>(2 * b, 2 * a + c) =
                 std::isfinite(Eh) ? Eigen::Vector2d((Gh.col(slots[b].k) - G.col(slots[b].k)) / h)
                                   : Eigen::Vector2d::Zero();
         }
-      const Eigen::MatrixXd Hd = P.transpose() * (0.5 * (Hl + Hl.transpose())) * P;
+      // A quadrilateral's projected onto the positive semi-definite matrices (see the
+      // header); a triangle's as it is (the same expression as before quadrilaterals came,
+      // so that triangle-only results stay bit for bit).
+      const Eigen::MatrixXd Hd =
+          elements_[le] < m_.num_triangles()
+              ? Eigen::MatrixXd(P.transpose() * (0.5 * (Hl + Hl.transpose())) * P)
+              : Eigen::MatrixXd(P.transpose() * positive_part(0.5 * (Hl + Hl.transpose())) * P);
       const Eigen::VectorXd gd = P.transpose() * gl;
       for (int r = 0; r < Hd.rows(); ++r) {
         g(dof[r]) += gd(r);
@@ -107,7 +125,7 @@ class PatchNewton {
   bool certified() {
     for (std::size_t le = 0; le < elements_.size(); ++le) {
       if (slots_[le].empty()) continue;
-      const JacobianBounds b = jacobian_bounds(gather(le), m_.order, p_.bounds);
+      const JacobianBounds b = element_jacobian_bounds(m_, elements_[le], gather(le), p_.bounds);
       if (!b.valid_certified || scaled_jacobian_ratio(b) < p_.floor) return false;
     }
     return true;
@@ -151,19 +169,18 @@ class PatchNewton {
   bool sliding(int i) const { return s_.tag[free_[i]] >= 0; }
 
   const Eigen::Matrix2Xd& gather(std::size_t le) {
-    for (int k = 0; k < m_.tri.rows(); ++k) X_.col(k) = x_.col(m_.tri(k, elements_[le]));
+    const auto nodes = element_node_indices(m_, elements_[le]);
+    X_.resize(2, nodes.size());
+    for (int k = 0; k < nodes.size(); ++k) X_.col(k) = x_.col(nodes(k));
     return X_;
   }
 
-  // Smallest height of the straight triangle through element le's corners.
-  double height(std::size_t le) const {
-    const int e = elements_[le];
-    const Eigen::Vector2d a = x_.col(m_.tri(0, e)), b = x_.col(m_.tri(1, e)),
-                          c = x_.col(m_.tri(2, e));
-    const double edge = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    const double area2 = std::abs((b - a)(0) * (c - a)(1) - (b - a)(1) * (c - a)(0));
-    return area2 / edge;
+  const ElementTabulation& tab(std::size_t le) const {
+    return elements_[le] < m_.num_triangles() ? *p_.tab : *p_.quad_tab;
   }
+
+  // Smallest height of the straight element through element le's corners (element_lengths).
+  double height(std::size_t le) const { return element_lengths(m_, x_, elements_[le]).first; }
 
   const PatchProblem& p_;
   const Mesh& m_;
@@ -178,6 +195,12 @@ class PatchNewton {
 };
 
 }  // namespace
+
+JacobianBounds element_jacobian_bounds(const Mesh& m, int e, const Eigen::Matrix2Xd& X,
+                                       const BoundsOptions& opt) {
+  return e < m.num_triangles() ? jacobian_bounds(X, m.order, opt)
+                               : quad_jacobian_bounds(X, m.order, opt);
+}
 
 PatchNewtonResult patch_newton(const PatchProblem& problem, Eigen::Matrix2Xd& x,
                                SlidingNodes& sliding, int max_iterations, double tolerance) {

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "element/lagrange_basis.h"
 #include "element/quad_lagrange_basis.h"
+#include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
 #include "element/square_quadrature.h"
 
@@ -48,6 +49,25 @@ ElementTabulation tabulate_element_and_lattice(int order, int degree, double lat
   if (!(lattice_weight > 0)) return tab;
   const LagrangeBasis basis(order);
   const Eigen::Matrix2Xd lattice = reference_nodes(2 * (order - 1));
+  const int q = static_cast<int>(tab.rule.weights.size()), l = static_cast<int>(lattice.cols());
+  const double area = tab.rule.weights.sum();
+  QuadratureRule rule;
+  rule.points.resize(2, q + l);
+  rule.points << tab.rule.points, lattice;
+  rule.weights.resize(q + l);
+  rule.weights << (1 - lattice_weight) * tab.rule.weights,
+      Eigen::VectorXd::Constant(l, lattice_weight * area / l);
+  tab.rule = rule;
+  tab.N = basis.tabulate_values(rule.points);
+  basis.tabulate_gradients(rule.points, tab.dNdu, tab.dNdv);
+  return tab;
+}
+
+ElementTabulation tabulate_quad_element_and_lattice(int order, int degree, double lattice_weight) {
+  ElementTabulation tab = tabulate_quad_element(order, degree);
+  if (!(lattice_weight > 0)) return tab;
+  const QuadLagrangeBasis basis(order);
+  const Eigen::Matrix2Xd lattice = quad_reference_nodes(2 * order - 1);
   const int q = static_cast<int>(tab.rule.weights.size()), l = static_cast<int>(lattice.cols());
   const double area = tab.rule.weights.sum();
   QuadratureRule rule;

@@ -51,4 +51,11 @@ ElementTabulation tabulate_quad_element(int order, int quadrature_degree);
 /// not an exact rule: the high-order optimiser's energy, curving/optimise_mesh.h).
 ElementTabulation tabulate_element_and_lattice(int order, int degree, double lattice_weight);
 
+/// The quadrilateral analogue (quad = true): square_quadrature(degree) and, with
+/// lattice_weight > 0, the nodes of the square's order 2 order - 1 lattice
+/// (quad_reference_nodes: det J is of degree 2p - 1 per variable and its (2p)^2
+/// tensor-product Bezier coefficients, quality/quad_bezier_jacobian.h, sit there;
+/// corners and edges included), the weights shared as tabulate_element_and_lattice.
+ElementTabulation tabulate_quad_element_and_lattice(int order, int degree, double lattice_weight);
+
 }  // namespace homesh
