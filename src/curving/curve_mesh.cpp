@@ -12,10 +12,6 @@ namespace homesh {
 namespace {
 
 constexpr double kPassGain = 0.02;  // least lift of the worst minJ/maxJ worth another pass
-// A quadrilateral's bars are at most its straight-sided minJ/maxJ less this: a trapezium of
-// the linear mesh (a fan's cell: 1 / (1 + growth ratio)) stays one, which curving cannot
-// lift with the vertices held, only keep; below this it has spoilt it.
-constexpr double kQuadSlack = 0.01;
 
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -63,54 +59,19 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     return deform_mesh(raised, placed.x, prescribed, around);
   };
   const bool rings = opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order;
-  // The bars (accept_placed, polish, the optimiser's threshold) per element: a triangle's is
-  // the bar (straight-sided it is 1); a quadrilateral's at most its straight-sided ratio
-  // less kQuadSlack, so that a mesh whose linear quads are already poorer than a bar (Gmsh's
-  // fans of layer quads at a trailing edge: 0.455) is not solved in vain for them.
-  Eigen::VectorXd straight_ratio;
-  if (raised.num_quads() > 0) straight_ratio = mesh_validity(raised, opt.optimiser.bounds).ratio;
-  const int num_tri = raised.num_triangles();
-  auto bar_of = [&](int e, double bar) {
-    return e < num_tri || straight_ratio.size() == 0
-               ? bar
-               : std::min(bar, straight_ratio(e) - kQuadSlack);
+  // Some element invalid or below the bar.
+  auto below = [](const MeshValidity& v, double bar) { return v.invalid > 0 || v.worst < bar; };
+  auto solve_meets = [](const DeformResult& d, double bar) {
+    return d.complete && d.worst_ratio >= bar;
   };
-  // Some element invalid or below its bar.
-  auto below = [&](const MeshValidity& v, double bar) {
-    if (v.invalid > 0) return true;
-    for (int e = 0; e < static_cast<int>(v.ratio.size()); ++e)
-      if (v.ratio(e) < bar_of(e, bar)) return true;
-    return false;
-  };
-  // The least margin of an element over its bar of 1 (on a triangle mesh: worst - 1).
-  auto score = [&](const MeshValidity& v) {
-    double least = 1;
-    for (int e = 0; e < static_cast<int>(v.ratio.size()); ++e)
-      least = std::min(least, v.ratio(e) - bar_of(e, 1.0));
-    return least;
-  };
-  auto solve_meets = [&](const DeformResult& d, double bar) {
-    if (!d.complete) return false;
-    if (straight_ratio.size() == 0) return d.worst_ratio >= bar;
-    return !below(mesh_validity(d.mesh, opt.optimiser.bounds), bar);
-  };
-  // Validity a better than b: a higher worst, or the same worst (a linear quadrilateral's,
-  // which curving keeps) and a higher score.
-  auto better = [&](const MeshValidity& a, const MeshValidity& b) {
-    if (a.invalid != b.invalid) return a.invalid < b.invalid;
-    if (std::abs(a.worst - b.worst) > 1e-12) return a.worst > b.worst;
-    return straight_ratio.size() > 0 && score(a) > score(b);
-  };
-  // Solve d is better than a mesh whose worst is `worst` and validity v.
-  auto solve_beats = [&](const DeformResult& d, double worst, const MeshValidity& v) {
-    if (!d.complete) return false;
-    if (straight_ratio.size() == 0) return d.worst_ratio > worst;
-    return better(mesh_validity(d.mesh, opt.optimiser.bounds), v);
+  // Solve d is better than a mesh whose worst is `worst`.
+  auto solve_beats = [](const DeformResult& d, double worst) {
+    return d.complete && d.worst_ratio > worst;
   };
   auto poor_region = [&](const MeshValidity& v, double bar) {
     std::vector<bool> poor_nodes(placed.num_nodes(), false);
     for (int e = 0; e < placed.num_elements_2d(); ++e)
-      if (v.ratio(e) < bar_of(e, bar))
+      if (v.ratio(e) < bar)
         for (const int n : element_nodes(placed, e)) poor_nodes[n] = true;
     return moving_region(placed, poor_nodes, opt.placed_rings);
   };
@@ -137,7 +98,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     MeshValidity v;
     for (std::size_t g = 0; g < guesses.size(); ++g) {
       MeshValidity w = mesh_validity(guesses[g], opt.optimiser.bounds);
-      if (g == 0 || better(w, v)) {
+      if (g == 0 || w.invalid < v.invalid || (w.invalid == v.invalid && w.worst > v.worst)) {
         v = std::move(w);
         placed = std::move(guesses[g]);
         r.guess = g == 1 ? "propagated" : opt.blend ? "blended" : "straight";
@@ -154,7 +115,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
         const auto t = std::chrono::steady_clock::now();
         DeformResult d = solve_round(poor_region(v, opt.polish));
         r.elastic_seconds = since(t);
-        if (solve_beats(d, v.worst, v)) {
+        if (solve_beats(d, v.worst)) {
           r.placed = false;
           r.polished = true;
           r.worst_ratio = d.worst_ratio;
@@ -183,7 +144,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
       placed = r.deform.mesh;
       const MeshValidity pv = mesh_validity(placed, opt.optimiser.bounds);
       DeformResult d = solve_round(poor_region(pv, opt.polish));
-      if (solve_beats(d, r.deform.worst_ratio, pv)) {
+      if (solve_beats(d, r.deform.worst_ratio)) {
         d.solved_triangles += r.deform.solved_triangles;
         d.solves += r.deform.solves;
         r.deform = std::move(d);
@@ -250,11 +211,9 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     return r;
   }
 
-  // 3. Optimised, where the elastic result is valid and leaves poor elements. The
-  // optimiser moves triangles' nodes only: the quadrilaterals' are held.
-  std::vector<bool> none(raised.num_nodes(), false);
-  for (int q = 0; q < raised.num_quads(); ++q)
-    for (const int n : raised.quad.col(q)) none[n] = true;
+  // 3. Optimised, where the elastic result is valid and leaves poor elements (triangles and
+  // quadrilaterals: a linear mesh's poor quads are lifted by moving the vertices too).
+  const std::vector<bool> none(raised.num_nodes(), false);
   // Passes of the optimiser from the current solve, each from where the last stopped, while
   // elements stay below the threshold and a pass still lifts the worst by kPassGain.
   auto optimise = [&] {

@@ -6,11 +6,6 @@
 // 1. Placed: if the mesh with only the boundary nodes moved (the interior
 //    straight, as Gmsh's setOrder leaves it) is certified valid with every
 //    minJ/maxJ at least `accept_placed`, it is the result (no solve).
-//    Quadrilaterals: every bar here (accept_placed, polish, the optimiser's
-//    threshold) is, for a quadrilateral, at most its straight-sided minJ/maxJ
-//    less 0.01: a linear trapezium (a fan's layer cell, 1 / (1 + ratio)) is
-//    kept, not solved for in vain; ties of the worst are broken by the least
-//    margin over those bars.
 // 2. Elastic: the interior follows the augmented elastic analogy
 //    (deform_mesh.h) with every element certified valid. With
 //    fixed_vertices the linear mesh's interior vertices are held where they
