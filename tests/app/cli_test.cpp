@@ -194,7 +194,7 @@ TEST_CASE("stages that do not handle quadrilaterals refuse them, naming stage an
   const TempDir dir;
   const std::string in = msh22(dir, "square", {"3 1 2 3 4"}), out = dir / "quads_out.msh";
   // One stage through the CLI (tests/pipeline/run_stage_test.cpp checks every stage).
-  for (const std::string stage : {"optimise"}) {
+  for (const std::string stage : {"rotate"}) {
     const auto r = run_homesh(in + " -m " + stage + " " + out);
     INFO(r.output);
     REQUIRE(r.exit_code != 0);

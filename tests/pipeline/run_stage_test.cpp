@@ -30,6 +30,7 @@ TEST_CASE("run_stage refuses quadrilaterals to every stage that does not handle 
         run_stage(s, ctx, std::any()),
         "stage '" + s.name + "' does not handle quadrilaterals yet (mesh has 1 'Quadrilateral 4')");
   }
-  // A stage handles them only by decision: these six (two replace the mesh).
-  CHECK(handling == std::set<std::string>{"curve", "info", "mesh", "order", "quality", "voronoi"});
+  // A stage handles them only by decision: these seven (two replace the mesh).
+  CHECK(handling ==
+        std::set<std::string>{"curve", "info", "mesh", "optimise", "order", "quality", "voronoi"});
 }

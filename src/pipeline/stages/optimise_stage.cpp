@@ -83,7 +83,7 @@ Stage optimise_stage() {
       "high-order optimiser: patches round the elements below a minJ/maxJ threshold moved to "
       "lower the thesis' distortion (Eq 3.48), each kept only if certified valid and no worse; "
       "boundary nodes sliding along their CAD curves",
-      t, run);
+      t, run, /*creates_mesh=*/false, /*handles_quads=*/true);
 }
 
 }  // namespace homesh
