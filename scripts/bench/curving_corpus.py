@@ -179,13 +179,14 @@ def num(v):
         return None
 
 
-def read_rows(path):
+def read_rows(path, numeric=("invalid", "worst", "seconds", "stage_seconds", "turn_deg",
+                               "target", "triangles")):
+    """The CSV's rows, p an int and the `numeric` columns floats (None where empty)."""
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     for r in rows:
         r["p"] = int(r["p"])
-        for k in ("invalid", "worst", "seconds", "stage_seconds", "turn_deg", "target",
-                  "triangles"):
+        for k in numeric:
             r[k] = num(r[k])
     return rows
 

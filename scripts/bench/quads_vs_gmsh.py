@@ -53,6 +53,7 @@ sys.path.insert(0, HERE)
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
 import corpus  # noqa: E402
+import curving_corpus  # noqa: E402
 from curving_corpus import append_row, curved_to, first_line, prepare  # noqa: E402
 
 METHODS = {
@@ -172,21 +173,9 @@ def run_one(name, msh, p, method, timeout, build_timeout=600):
 
 # ---------------------------------------------------------------- report
 
-def num(v):
-    try:
-        return float(v)
-    except (TypeError, ValueError):
-        return None
-
-
 def read_rows(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    for r in rows:
-        r["p"] = int(r["p"])
-        for k in ("invalid", "worst", "seconds", "triangles", "quads", "linear_worst"):
-            r[k] = num(r[k])
-    return rows
+    return curving_corpus.read_rows(
+        path, ("invalid", "worst", "seconds", "triangles", "quads", "linear_worst"))
 
 
 def valid(r):

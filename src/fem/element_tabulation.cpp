@@ -1,6 +1,7 @@
 #include "fem/element_tabulation.h"
 
 #include <string>
+#include <utility>
 
 #include "core/error.h"
 #include "element/lagrange_basis.h"
@@ -44,11 +45,13 @@ ElementTabulation tabulate_quad_element(int order, int quadrature_degree) {
   return tab;
 }
 
-ElementTabulation tabulate_element_and_lattice(int order, int degree, double lattice_weight) {
-  ElementTabulation tab = tabulate_element(order, degree);
-  if (!(lattice_weight > 0)) return tab;
-  const LagrangeBasis basis(order);
-  const Eigen::Matrix2Xd lattice = reference_nodes(2 * (order - 1));
+namespace {
+
+// tab with the nodes of `lattice` appended to its rule: the rule's weights scaled by
+// 1 - lattice_weight, the lattice sharing lattice_weight of the area equally.
+template <class Basis>
+ElementTabulation with_lattice(ElementTabulation tab, const Basis& basis,
+                               const Eigen::Matrix2Xd& lattice, double lattice_weight) {
   const int q = static_cast<int>(tab.rule.weights.size()), l = static_cast<int>(lattice.cols());
   const double area = tab.rule.weights.sum();
   QuadratureRule rule;
@@ -63,23 +66,20 @@ ElementTabulation tabulate_element_and_lattice(int order, int degree, double lat
   return tab;
 }
 
+}  // namespace
+
+ElementTabulation tabulate_element_and_lattice(int order, int degree, double lattice_weight) {
+  ElementTabulation tab = tabulate_element(order, degree);
+  if (!(lattice_weight > 0)) return tab;
+  return with_lattice(std::move(tab), LagrangeBasis(order), reference_nodes(2 * (order - 1)),
+                      lattice_weight);
+}
+
 ElementTabulation tabulate_quad_element_and_lattice(int order, int degree, double lattice_weight) {
   ElementTabulation tab = tabulate_quad_element(order, degree);
   if (!(lattice_weight > 0)) return tab;
-  const QuadLagrangeBasis basis(order);
-  const Eigen::Matrix2Xd lattice = quad_reference_nodes(2 * order - 1);
-  const int q = static_cast<int>(tab.rule.weights.size()), l = static_cast<int>(lattice.cols());
-  const double area = tab.rule.weights.sum();
-  QuadratureRule rule;
-  rule.points.resize(2, q + l);
-  rule.points << tab.rule.points, lattice;
-  rule.weights.resize(q + l);
-  rule.weights << (1 - lattice_weight) * tab.rule.weights,
-      Eigen::VectorXd::Constant(l, lattice_weight * area / l);
-  tab.rule = rule;
-  tab.N = basis.tabulate_values(rule.points);
-  basis.tabulate_gradients(rule.points, tab.dNdu, tab.dNdv);
-  return tab;
+  return with_lattice(std::move(tab), QuadLagrangeBasis(order), quad_reference_nodes(2 * order - 1),
+                      lattice_weight);
 }
 
 }  // namespace homesh
