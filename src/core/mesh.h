@@ -110,6 +110,12 @@ struct Mesh {
   std::size_t quad_tag(int q) const { return triangle_tag(num_triangles() + q); }
 };
 
+/// The node indices of 2D element e of m (triangle e, or quadrilateral
+/// e - #triangles), Gmsh order: its 3 or 4 corners first.
+inline Eigen::MatrixXi::ConstColXpr element_node_indices(const Mesh& m, int e) {
+  return e < m.num_triangles() ? m.tri.col(e) : m.quad.col(e - m.num_triangles());
+}
+
 /// Highest element order homesh supports (the basis stays accurate to ~1e-10).
 constexpr int kMaxOrder = 10;
 

@@ -1,7 +1,6 @@
 #include "curving/curve_mesh.h"
 
 #include <chrono>
-#include <cmath>
 
 #include "core/raise_order.h"
 #include "curving/interior_blending.h"
@@ -15,11 +14,6 @@ constexpr double kPassGain = 0.02;  // least lift of the worst minJ/maxJ worth a
 
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The node indices of 2D element e: triangle e, else quadrilateral e - #triangles.
-Eigen::Ref<const Eigen::VectorXi> element_nodes(const Mesh& m, int e) {
-  return e < m.num_triangles() ? m.tri.col(e) : m.quad.col(e - m.num_triangles());
 }
 
 }  // namespace
@@ -51,7 +45,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     for (int e : region) in_region[e] = true;
     for (int e = 0; e < raised.num_elements_2d(); ++e)
       if (!in_region[e])
-        for (const int n : element_nodes(raised, e)) outside[n] = true;
+        for (const int n : element_node_indices(raised, e)) outside[n] = true;
     std::vector<bool> prescribed = held;
     for (int i = 0; i < raised.num_nodes(); ++i) prescribed[i] = prescribed[i] || outside[i];
     DeformOptions around = opt.deform;
@@ -59,20 +53,11 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     return deform_mesh(raised, placed.x, prescribed, around);
   };
   const bool rings = opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order;
-  // Some element invalid or below the bar.
-  auto below = [](const MeshValidity& v, double bar) { return v.invalid > 0 || v.worst < bar; };
-  auto solve_meets = [](const DeformResult& d, double bar) {
-    return d.complete && d.worst_ratio >= bar;
-  };
-  // Solve d is better than a mesh whose worst is `worst`.
-  auto solve_beats = [](const DeformResult& d, double worst) {
-    return d.complete && d.worst_ratio > worst;
-  };
   auto poor_region = [&](const MeshValidity& v, double bar) {
     std::vector<bool> poor_nodes(placed.num_nodes(), false);
     for (int e = 0; e < placed.num_elements_2d(); ++e)
       if (v.ratio(e) < bar)
-        for (const int n : element_nodes(placed, e)) poor_nodes[n] = true;
+        for (const int n : element_node_indices(placed, e)) poor_nodes[n] = true;
     return moving_region(placed, poor_nodes, opt.placed_rings);
   };
 
@@ -103,19 +88,18 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
         placed = std::move(guesses[g]);
         r.guess = g == 1 ? "propagated" : opt.blend ? "blended" : "straight";
       }
-      if (!below(v, opt.accept_placed)) break;
+      if (v.invalid == 0 && v.worst >= opt.accept_placed) break;
     }
     r.placed_worst = v.invalid == 0 ? v.worst : 0;
-    if (!below(v, opt.accept_placed)) {
+    if (v.invalid == 0 && v.worst >= opt.accept_placed) {
       r.placed = true;
-      r.placed_met = true;
       r.worst_ratio = v.worst;
       // Good enough, not yet `polish`: a solve round the elements below it, kept if better.
-      if (opt.placed_rings > 0 && below(v, opt.polish)) {
+      if (opt.placed_rings > 0 && v.worst < opt.polish) {
         const auto t = std::chrono::steady_clock::now();
         DeformResult d = solve_round(poor_region(v, opt.polish));
         r.elastic_seconds = since(t);
-        if (solve_beats(d, v.worst)) {
+        if (d.complete && d.worst_ratio > v.worst) {
           r.placed = false;
           r.polished = true;
           r.worst_ratio = d.worst_ratio;
@@ -138,13 +122,13 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   bool local = false;
   if (!local_region.empty()) {
     r.deform = solve_round(local_region);
-    local = solve_meets(r.deform, opt.accept_placed);
+    local = r.deform.complete && r.deform.worst_ratio >= opt.accept_placed;
     // Kept, but below `polish`: solved again round its elements below that, from it.
-    if (local && !solve_meets(r.deform, opt.polish)) {
+    if (local && r.deform.worst_ratio < opt.polish) {
       placed = r.deform.mesh;
-      const MeshValidity pv = mesh_validity(placed, opt.optimiser.bounds);
-      DeformResult d = solve_round(poor_region(pv, opt.polish));
-      if (solve_beats(d, r.deform.worst_ratio)) {
+      DeformResult d =
+          solve_round(poor_region(mesh_validity(placed, opt.optimiser.bounds), opt.polish));
+      if (d.complete && d.worst_ratio > r.deform.worst_ratio) {
         d.solved_triangles += r.deform.solved_triangles;
         d.solves += r.deform.solves;
         r.deform = std::move(d);
@@ -200,7 +184,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     r.guess_over_solve = true;
   }
   r.worst_ratio = r.deform.worst_ratio;
-  if (!(opt.optimise && r.deform.complete && !solve_meets(r.deform, opt.optimiser.threshold))) {
+  if (!(opt.optimise && r.deform.complete && r.deform.worst_ratio < opt.optimiser.threshold)) {
     if (guess_start.complete) {  // better than the solve, and no optimisation to come
       r.deform = std::move(guess_start);
       r.worst_ratio = r.deform.worst_ratio;

@@ -113,9 +113,7 @@ struct CurveResult {
   bool polished = false;           ///< step 1's guess sufficed, then solved round its poorest
   std::string guess = "straight";  ///< step 1's guess kept: straight, blended or propagated
   double placed_worst = 0;         ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
-  /// Step 1's guess met accept_placed (each quadrilateral: its straight-sided ratio, if lower).
-  bool placed_met = false;
-  DeformResult deform;  ///< of the last solve (if any)
+  DeformResult deform;             ///< of the last solve (if any)
   /// The result comes from step 1's valid guess, not the solve: the solve fell short of it
   /// (incomplete, or poorer), and the guess was kept or optimised better than the solve.
   bool guess_over_solve = false;

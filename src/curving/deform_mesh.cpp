@@ -21,12 +21,6 @@ std::vector<bool> boundary_nodes(const Mesh& m) {
 
 namespace {
 
-// The nodes of 2D element e: triangle e, or quadrilateral e - #triangles
-// (core/mesh.h).
-Eigen::MatrixXi::ConstColXpr element_nodes(const Mesh& m, int e) {
-  return e < m.num_triangles() ? m.tri.col(e) : m.quad.col(e - m.num_triangles());
-}
-
 // 3 for a triangle, 4 for a quadrilateral: its corners head its nodes.
 int corner_count(const Mesh& m, int e) { return e < m.num_triangles() ? 3 : 4; }
 
@@ -35,7 +29,7 @@ int corner_count(const Mesh& m, int e) { return e < m.num_triangles() ? 3 : 4; }
 std::vector<bool> vertex_nodes(const Mesh& m) {
   std::vector<bool> v(static_cast<std::size_t>(m.num_nodes()), false);
   for (int e = 0; e < m.num_elements_2d(); ++e) {
-    const auto nodes = element_nodes(m, e);
+    const auto nodes = element_node_indices(m, e);
     for (int k = 0; k < corner_count(m, e); ++k) v[nodes(k)] = true;
   }
   return v;
@@ -46,13 +40,13 @@ std::vector<int> moving_region(const Mesh& m, const std::vector<bool>& moving, i
   std::vector<bool> reached = moving, selected(n, false);
   for (int layer = 0; layer < layers; ++layer) {
     for (int e = 0; e < n; ++e) {
-      const auto nodes = element_nodes(m, e);
+      const auto nodes = element_node_indices(m, e);
       for (Eigen::Index i = 0; i < nodes.size() && !selected[e]; ++i)
         selected[e] = reached[nodes(i)];
     }
     for (int e = 0; e < n; ++e)
       if (selected[e]) {
-        const auto nodes = element_nodes(m, e);
+        const auto nodes = element_node_indices(m, e);
         for (Eigen::Index i = 0; i < nodes.size(); ++i) reached[nodes(i)] = true;
       }
   }
@@ -69,7 +63,7 @@ std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, do
   std::vector<Eigen::Vector2d> centre;
   std::vector<double> radius;
   for (int e = 0; e < n; ++e) {
-    const auto nodes = element_nodes(m, e);
+    const auto nodes = element_node_indices(m, e);
     bool touches = false;
     for (Eigen::Index i = 0; i < nodes.size() && !touches; ++i) touches = moving[nodes(i)];
     if (!touches) continue;
@@ -106,7 +100,7 @@ std::vector<int> reach_region(const Mesh& m, const std::vector<bool>& moving, do
     return false;
   };
   for (int e = 0; e < n; ++e) {
-    const auto nodes = element_nodes(m, e);
+    const auto nodes = element_node_indices(m, e);
     bool in = false;
     for (int a = 0; a < corner_count(m, e) && !in; ++a) in = near(nodes(a));
     if (in) region.push_back(e);
@@ -136,7 +130,7 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
   }
   for (int e = 0; e < num_2d; ++e)
     if (!inside[e]) {
-      const auto nodes = element_nodes(m, e);
+      const auto nodes = element_node_indices(m, e);
       for (Eigen::Index i = 0; i < nodes.size(); ++i) outside_node[nodes(i)] = true;
     }
   std::vector<int> local(m.num_nodes(), -1), global;
@@ -148,7 +142,7 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
   sub.quad.resize(m.quad.rows(), Eigen::Index(region.size()) - sub_tri);
   Eigen::Index next_tri = 0, next_quad = 0;
   for (int e : region) {
-    const auto nodes = element_nodes(m, e);
+    const auto nodes = element_node_indices(m, e);
     const bool triangle = e < num_tri;
     for (Eigen::Index i = 0; i < nodes.size(); ++i) {
       int& node = local[nodes(i)];

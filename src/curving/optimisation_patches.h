@@ -15,12 +15,6 @@
 
 namespace homesh {
 
-/// The node indices of 2D element e of m (triangle e, or quadrilateral
-/// e - #triangles), Gmsh order: its 3 or 4 corners first.
-inline Eigen::MatrixXi::ConstColXpr element_node_indices(const Mesh& m, int e) {
-  return e < m.num_triangles() ? m.tri.col(e) : m.quad.col(e - m.num_triangles());
-}
-
 /// Length scales of 2D element e with nodes at x: its straight (corner)
 /// element's area divided by its longest corner-to-corner edge (a triangle's
 /// smallest height; a rectangle's shorter side), and that longest edge.

@@ -86,7 +86,8 @@ void run(Context& ctx, const CurveOptions& o) {
         c.placed_worst > 0 ? fmt::format("worst minJ/maxJ {:.4f}", c.placed_worst)
                            : std::string("not certified valid"),
         o.polish,
-        !c.placed_met ? fmt::format(" (first below {:g})", o.accept_placed) : std::string(),
+        c.placed_worst < o.accept_placed ? fmt::format(" (first below {:g})", o.accept_placed)
+                                         : std::string(),
         r.solved_triangles, r.worst_ratio, c.elastic_seconds);
   else if (!c.placed && o.accept_placed <= 1)
     ctx.log.info("curve: boundary nodes placed, interior {}: {}; solving", c.guess,
