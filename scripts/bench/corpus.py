@@ -37,6 +37,10 @@ rounded re-entrant corner and a hole, a plate with holes. Wall sizes coarse and 
 cells 1e-3 .. 1e-5 of the chord. Every case has the physical curve group "wall" (what is
 curved and what layers grow from), "farfield" where it has one, and the surface "fluid".
 
+The layers family (issue 20; `--family layers`) is every gmsh_bl case again with homesh's
+layers instead of Gmsh's field (mesher `layers`, `_hl_` in the name for `_bl_`): the same
+geometry, sizes and stack, so the two layer meshers meet case by case.
+
 The record of a case (`build` returns it): triangles, other 2D elements (must be 0; the quad
 family's records count the linear quadrangles apart, `quads`, and only the rest as other), wall
 edges, the requested and the measured first-cell height (over the wall nodes, the shortest
@@ -53,7 +57,7 @@ Library use (the benchmark does this before each method, in a fresh Gmsh session
 
 Command line (Debian's /usr/bin/python3, PYTHONPATH=build/python for homesh):
 
-    corpus.py [--list] [--cases PATTERN] [--family default|quads|all] [--out DIR]
+    corpus.py [--list] [--cases PATTERN] [--family default|quads|layers|all] [--out DIR]
 
 writes DIR/NAME.msh (the linear mesh; see `write`) and DIR/NAME.brep
 (its CAD) per case, and DIR/corpus.csv (the records); default DIR out/bench/corpus/meshes.
@@ -64,7 +68,8 @@ import fnmatch
 import math
 import os
 import sys
-from dataclasses import dataclass, field
+import time
+from dataclasses import dataclass, field, replace
 
 import gmsh
 import numpy as np
@@ -437,13 +442,30 @@ def _quad_cases():
     return C
 
 
+def _layer_twins(cases):
+    """The layers family (issue 20): every gmsh_bl case of the triangle corpus again, its
+    layers made by homesh instead (mesher `layers`, the same CAD, sizes, first cell, ratio,
+    count and fans), named with `_hl_` for `_bl_`: Gmsh's BoundaryLayer field and homesh's
+    layers stage on the same geometries and stacks."""
+    return [replace(c, name=c.name.replace("_bl_", "_hl_"), mesher="layers")
+            for c in cases if c.mesher == "gmsh_bl"]
+
+
 CASES = _cases()
 QUAD_CASES = _quad_cases()
-FAMILIES = dict(default=CASES, quads=QUAD_CASES, all=CASES + QUAD_CASES)
+LAYER_CASES = _layer_twins(CASES)
+FAMILIES = dict(default=CASES, quads=QUAD_CASES, layers=LAYER_CASES,
+                all=CASES + QUAD_CASES + LAYER_CASES)
+
+
+def twin(c):
+    """The gmsh_bl case a layers-family case was made from (by name), or None."""
+    name = c.name.replace("_hl_", "_bl_")
+    return next((b for b in CASES if b.name == name and b.mesher == "gmsh_bl"), None)
 
 
 def case(name):
-    for c in CASES + QUAD_CASES:
+    for c in CASES + QUAD_CASES + LAYER_CASES:
         if c.name == name:
             return c
     raise KeyError(f"no corpus case '{name}'")
@@ -596,6 +618,7 @@ def build(c, quiet=True):
         if tags:
             gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), name)
     _sizes(c, walls)
+    start, layers_seconds = time.perf_counter(), None
     if c.mesher == "gmsh_bl":
         _gmsh_bl(c, walls)
     elif c.mesher == "gmsh_bl_quads":
@@ -618,14 +641,19 @@ def build(c, quiet=True):
             opts = dict(walls=WALL, n=c.n, first=c.first, ratio=c.ratio)
             if sharp_points(walls):
                 opts.update(normals="multi", fan=c.fan, fan_angle=320)
+            t = time.perf_counter()
             homesh.layers(**opts)
+            layers_seconds = time.perf_counter() - t
     elif c.mesher == "voronoi":
         import homesh
         homesh.set_quiet(quiet)
         homesh.voronoi()
     else:
         raise ValueError(f"case {c.name}: unknown mesher {c.mesher}")
-    return record(c, walls)
+    seconds = time.perf_counter() - start
+    rec = record(c, walls)
+    rec.update(mesh_seconds=seconds, layers_seconds=layers_seconds)
+    return rec
 
 
 def load(c, msh):
@@ -728,11 +756,20 @@ def record(c, walls):
                         if h < heights.get(v, math.inf):
                             heights[v] = h
     h = np.array(list(heights.values())) if heights else np.array([math.nan])
+    # Worst radius ratio (thesis Eq 4.17) of the linear triangles: 8 (s-a)(s-b)(s-c) / (a b c).
+    tri = [T for T in cells if T.shape[1] == 3]
+    rr = math.nan
+    if tri:
+        P = np.concatenate([np.array([x[v] for v in T.ravel()]).reshape(-1, 3, 2)
+                            for T in tri])
+        a, b, e = (np.linalg.norm(P[:, i] - P[:, j], axis=1) for i, j in ((1, 2), (2, 0), (0, 1)))
+        sp = (a + b + e) / 2
+        rr = float((8 * (sp - a) * (sp - b) * (sp - e) / (a * b * e)).min())
     rec = dict(case=c.name, shape=c.shape, mesher=c.mesher, h_wall=c.h_wall, first=c.first,
                layers=c.n, ratio=c.ratio if c.n else "", triangles=triangles, other_2d=others,
                wall_edges=len(edges), first_min=float(h.min()), first_median=float(np.median(h)),
                turn_deg=round(turn_smooth, 2), turn_all_deg=round(turn_all, 2),
-               target=0.9 if turn_smooth < 30 else 0.8)
+               target=0.9 if turn_smooth < 30 else 0.8, worst_radius_ratio=rr)
     if c.quads:   # the quad family: its quads counted beside the triangles
         rec = {k: v for key, value in rec.items()
                for k, v in ([(key, value), ("quads", quads)] if key == "triangles"
@@ -747,7 +784,8 @@ def main(argv=None):
     ap.add_argument("--list", action="store_true", help="list the cases and exit")
     ap.add_argument("--cases", help="comma-separated name patterns (substring or glob)")
     ap.add_argument("--family", choices=sorted(FAMILIES), default="default",
-                    help="default: the triangle corpus; quads: the quad family (issue 21); all")
+                    help="default: the triangle corpus; quads: the quad family (issue 21); "
+                         "layers: the gmsh_bl cases with homesh's layers (issue 20); all")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "bench", "corpus", "meshes"))
     args = ap.parse_args(argv)
     cases = select(args.cases, args.family)

@@ -25,7 +25,7 @@ referee) is killed and recorded as "timeout".
 
 Usage:
   PYTHONPATH=build/python /usr/bin/python3 scripts/bench/curving_corpus.py
-      [--cases PATTERN] [--orders 2,3,4,5] [--out out/bench/corpus] [--timeout 120]
+      [--cases PATTERN] [--family default|layers] [--orders 2,3,4,5] [--out out/bench/corpus] [--timeout 120]
       [--methods homesh,gmsh*] [--variant k=v:k=v ...] [--rebuild] [--report-only]
 --variant adds a method "homesh k=v:k=v" (homesh.curve with those options): choosing a
 default on the corpus, its summary is reported beside the defaults' against the same Gmsh
@@ -411,6 +411,9 @@ def append_row(csv_path, fields, row, res, width):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--cases", help="comma-separated case name patterns (substring or glob)")
+    ap.add_argument("--family", choices=sorted(corpus.FAMILIES), default="default",
+                    help="the corpus family (corpus.py): default, the triangle corpus; layers, "
+                         "its gmsh_bl cases with homesh's layers (issue 20)")
     ap.add_argument("--orders", default="2,3,4,5")
     ap.add_argument("--methods", default=",".join(METHODS),
                     help="comma-separated method names or globs (default: all)")
@@ -437,7 +440,7 @@ def main(argv=None):
     if args.report_only:
         report(csv_path, args.out)
         return 0
-    cases = corpus.select(args.cases)
+    cases = corpus.select(args.cases, args.family)
     orders = [int(p) for p in args.orders.split(",")]
     methods = [m for m in METHODS
                if any(fnmatch.fnmatch(m, pat) for pat in args.methods.split(",") if pat)]
