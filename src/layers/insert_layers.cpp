@@ -199,22 +199,27 @@ LayerResult insert_layers(const Mesh& input, const LayerOptions& opt) {
     scale[k] = r.lines[k].scale;
   }
   const StackFit fit =
-      fit_stack(m, plan.wall, direction, scale, plan.next, d[n], opt.first, opt.fill);
+      fit_stack(m, plan.wall, direction, scale, plan.next, d[n], opt.first, opt.fill, opt.cross);
   if (fit.no_room >= 0) {
     const LayerLine& line = r.lines[fit.no_room];
-    const double room = opt.fill * fit.gap / line.scale;
-    throw Error("layers: no layer fits at the wall node " + point_text(m.x.col(line.wall_node)) +
-                " on curve " + std::to_string(curve[fit.no_room]) + ": along its normal curve " +
-                std::to_string(fit.curve) + " is " + number_text(fit.gap) +
-                " away, room for a stack " + number_text(room) + " deep (fill = " +
-                number_text(opt.fill) + "), less than the first layer (" + number_text(opt.first) +
-                "); first = " + number_text(round_down(0.5 * room)) + " would fit");
+    const double room = (fit.crossing ? opt.cross : opt.fill) * fit.gap / line.scale;
+    const std::string what =
+        fit.crossing
+            ? "the neighbouring normals cross (a concave wall) " + number_text(fit.gap) + " away"
+            : "curve " + std::to_string(fit.curve) + " is " + number_text(fit.gap) + " away";
+    throw Error(
+        "layers: no layer fits at the wall node " + point_text(m.x.col(line.wall_node)) +
+        " on curve " + std::to_string(curve[fit.no_room]) + ": along its normal " + what +
+        ", room for a stack " + number_text(room) + " deep (" +
+        (fit.crossing ? "cross = " + number_text(opt.cross) : "fill = " + number_text(opt.fill)) +
+        "), less than the first layer (" + number_text(opt.first) +
+        "); first = " + number_text(round_down(0.5 * room)) + " would fit");
   }
   for (int k = 0; k < count; ++k) r.lines[k].scale *= fit.factor[k];
   for (const ThinnedStretch& t : fit.thinned)
     r.thinned.push_back({m.x.col(r.lines[t.first].wall_node), m.x.col(r.lines[t.last].wall_node),
                          m.x.col(r.lines[t.tightest].wall_node), t.lines, t.factor, t.gap,
-                         curve[t.tightest], t.curve});
+                         curve[t.tightest], t.curve, t.crossing});
   for (int k = 0; k < count; ++k)
     plan.target.col(k) =
         m.x.col(r.lines[k].wall_node) + d[n] * r.lines[k].scale * r.lines[k].direction;

@@ -21,7 +21,8 @@
 // the split included), E the number of wall edges, c the free nodes removed from the room
 // (clear_room.h); node count: V - c + n L, L the number of normal lines.
 //
-// Where a normal meets another boundary closer than d_n / fill, the layers of
+// Where a normal meets another boundary closer than d_n / fill, or its
+// neighbours' normals cross (a concave wall) closer than that, the layers of
 // that line are thinned to fit (stack_fit.h) and the result lists where.
 //
 // Open walls (wall_loops.h) end on a non-wall boundary: their end normals run
@@ -51,6 +52,10 @@ struct LayerOptions {
   /// Largest fraction of the distance along a normal to the nearest other
   /// boundary the stack may take; thinner layers there (stack_fit.h). In (0, 1].
   double fill = 0.4;
+  /// Largest fraction of the depth at which neighbouring normals cross (concave
+  /// walls and corners) the stack may take; thinner layers there (stack_fit.h).
+  /// In (0, 1).
+  double cross = 0.6;
   /// The layer cells of the wall edges as quadrilaterals, not split into two triangles
   /// each. A fan stays triangles: its cells between diverging normals are trapezia of
   /// minJ/maxJ d_(k-1) / d_k (1 / (1 + ratio) in layer 2: 0.45 at ratio 1.2, what Gmsh's
@@ -76,7 +81,10 @@ struct ThinnedLayers {
   double factor = 1;         ///< thickness there over the full stack's, in (0, 1)
   double gap = 0;            ///< distance along the normal there to the nearest boundary
   int curve = -1;            ///< the wall's curve there
-  int facing = -1;           ///< the curve met along the normal
+  int facing = -1;           ///< the curve met along the normal (-1 if crossing)
+  /// The limit is where neighbouring normals cross (a concave wall, stack_fit.h),
+  /// gap the distance to it along the normal.
+  bool crossing = false;
 };
 
 struct LayerResult {

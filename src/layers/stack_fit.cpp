@@ -33,7 +33,7 @@ double ray_hit(const Eigen::Vector2d& p, const Eigen::Vector2d& d, const Eigen::
 
 StackFit fit_stack(const Mesh& m, const std::vector<int>& origin, const Eigen::Matrix2Xd& direction,
                    const std::vector<double>& scale, const std::vector<int>& next, double depth,
-                   double first, double fill, double slope) {
+                   double first, double fill, double cross, double slope) {
   const int lines = static_cast<int>(origin.size());
   StackFit fit;
   fit.factor.assign(lines, 1.0);
@@ -59,6 +59,34 @@ StackFit fit_stack(const Mesh& m, const std::vector<int>& origin, const Eigen::M
     }
     fit.factor[k] = std::min(1.0, room / (depth * scale[k]));
   }
+  // Concave walls: consecutive lines k, j converge where the top edge of their
+  // cell at depth D, t + D u (t = w_j - w_k, u = s_j n_j - s_k n_k), has no
+  // length left along the wall edge: D* = -|t|^2 / (t . u) if t . u < 0. The
+  // stack takes fill of it on both lines (thinning both by one factor keeps D*
+  // over the stack's depth). Fans (lines of one wall node, t = 0) diverge.
+  std::vector<bool> crossing(lines, false);
+  for (int k = 0; k < lines; ++k) {
+    const int j = next[k];
+    if (j < 0 || origin[j] == origin[k]) continue;
+    const Eigen::Vector2d t = m.x.col(origin[j]) - m.x.col(origin[k]);
+    const Eigen::Vector2d u = scale[j] * direction.col(j) - scale[k] * direction.col(k);
+    const double tu = t.dot(u);
+    if (!(tu < 0)) continue;
+    const double cross_depth = -t.squaredNorm() / tu;  // D*, in depth units
+    const double limit = std::min(1.0, cross * cross_depth / depth);
+    for (const int l : {k, j}) {
+      if (limit >= fit.factor[l]) continue;
+      fit.factor[l] = limit;
+      gap[l] = cross_depth * scale[l];  // along line l, where the neighbours meet
+      curve[l] = -1;
+      crossing[l] = true;
+      if (cross * gap[l] < first * scale[l] && fit.no_room < 0) {
+        fit.no_room = l;
+        fit.gap = gap[l];
+        fit.crossing = true;
+      }
+    }
+  }
   // The thinning spreads to the neighbours: t_k <= t_j + slope |w_k - w_j| / d_n.
   std::vector<int> prev(lines, -1);
   for (int k = 0; k < lines; ++k)
@@ -77,7 +105,8 @@ StackFit fit_stack(const Mesh& m, const std::vector<int>& origin, const Eigen::M
     if (seen[k] || fit.factor[k] >= 1) continue;
     int start = k;
     while (prev[start] >= 0 && fit.factor[prev[start]] < 1 && prev[start] != k) start = prev[start];
-    ThinnedStretch t{start, start, 0, start, fit.factor[start], gap[start], curve[start]};
+    ThinnedStretch t{start,        start,          0, start, fit.factor[start], gap[start],
+                     curve[start], crossing[start]};
     for (int j = start; j >= 0 && !seen[j] && fit.factor[j] < 1; j = next[j]) {
       seen[j] = true;
       t.last = j;
@@ -87,6 +116,7 @@ StackFit fit_stack(const Mesh& m, const std::vector<int>& origin, const Eigen::M
         t.factor = fit.factor[j];
         t.gap = gap[j];
         t.curve = curve[j];
+        t.crossing = crossing[j];
       }
     }
     fit.thinned.push_back(t);

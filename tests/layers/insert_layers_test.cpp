@@ -241,6 +241,42 @@ TEST_CASE("layers thin the stack in a narrow gap and say by how much", "[layers]
   }
 }
 
+TEST_CASE("layers thin the stack where a concave wall makes the normals cross", "[layers]") {
+  // The domain inside the flower r = 3 + 0.6 cos(6 theta) (96 nodes, walls
+  // "outer") round a hole of radius 0.3. At the six lobe tips the wall's radius of
+  // curvature is r^2 / (r^2 - r r'') = 3.6^2 / (3.6^2 + 3.6 * 21.6) = 0.514: the
+  // normals cross about that deep, so a stack 0.75 deep (6 x 0.125) folds there.
+  // With cross = 0.6 it takes 0.6 of the crossing depth at the tips, thinned.
+  Eigen::Matrix2Xd flower(2, 96);
+  for (int i = 0; i < 96; ++i) {
+    const double a = 2 * M_PI * i / 96, r = 3 + 0.6 * std::cos(6 * a);
+    flower.col(i) = r * Eigen::Vector2d(std::cos(a), std::sin(a));
+  }
+  const Mesh m = test::ring_mesh(test::circle(96, 0.3), flower, 10);
+  LayerOptions o = test::layer_options({"outer"}, 6, 0.125, 1);
+  const LayerResult r = insert_layers(m, o);
+  CHECK(mesh_validity(r.mesh).invalid == 0);
+  // (The troughs, r = 2.4, are 2.1 from the hole: room for 0.84 there, no thinning.)
+  REQUIRE(r.thinned.size() == 6);
+  for (const ThinnedLayers& t : r.thinned) {
+    CHECK(t.crossing);
+    CHECK(t.facing == -1);
+    CHECK(std::abs(t.tightest.norm() - 3.6) < 0.1);  // at a lobe tip
+    CHECK(t.gap == Approx(0.514).margin(0.07));      // the discrete crossing depth
+    CHECK(t.factor > 0.4);                           // 0.6 * 0.514 / 0.75 = 0.41
+    CHECK(t.factor < 0.5);
+  }
+  // Taking the whole crossing depth, the cells at the tips fold.
+  o.cross = 0.999;
+  CHECK_THROWS_WITH(insert_layers(m, o), Catch::Contains("fold") || Catch::Contains("room"));
+  // A first layer deeper than cross times the crossing depth fails at once.
+  o.cross = 0.6;
+  o.layers = 1;
+  o.first = 0.4;
+  CHECK_THROWS_WITH(insert_layers(m, o), Catch::Contains("neighbouring normals cross") &&
+                                             Catch::Contains("cross = 0.6"));
+}
+
 TEST_CASE("layers refuse at once where not even the first layer fits", "[layers]") {
   // Gap 0.5 between the circles of radius 1 and 1.5: room for 0.4 * 0.5 = 0.2,
   // less than a first layer of 0.25 (times the miter 1 / cos(pi / 32)).

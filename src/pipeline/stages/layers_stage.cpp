@@ -45,12 +45,18 @@ void run(Context& ctx, const LayerOptions& o) {
   const int shown = 5;
   for (std::size_t i = 0; i < r.thinned.size() && i < shown; ++i) {
     const ThinnedLayers& t = r.thinned[i];
+    const std::string where =
+        t.crossing ? fmt::format(
+                         "its neighbouring normals cross {:.4g} away (a concave wall; "
+                         "cross = {:g})",
+                         t.gap, o.cross)
+                   : fmt::format("curve {} is {:.4g} away along the normal (fill = {:g})", t.facing,
+                                 t.gap, o.fill);
     ctx.log.warn(
         "layers: stack thinned to {:.0f} % ({:.4g} of {:.4g}) at ({:.6g}, {:.6g}) on curve {}, "
-        "where curve {} is {:.4g} away along the normal (fill = {:g}); {} normal(s) thinned "
-        "from ({:.6g}, {:.6g}) to ({:.6g}, {:.6g})",
+        "where {}; {} normal(s) thinned from ({:.6g}, {:.6g}) to ({:.6g}, {:.6g})",
         100 * t.factor, t.factor * r.thickness, r.thickness, t.tightest(0), t.tightest(1), t.curve,
-        t.facing, t.gap, o.fill, t.lines, t.from(0), t.from(1), t.to(0), t.to(1));
+        where, t.lines, t.from(0), t.from(1), t.to(0), t.to(1));
   }
   if (r.thinned.size() > shown)
     ctx.log.warn("layers: stack thinned at {} more place(s)", r.thinned.size() - shown);
@@ -111,8 +117,11 @@ Stage layers_stage() {
         "thickness ratio of consecutive layers");
   t.add("fill", &LayerOptions::fill, real(0, 1, "(]"),
         "largest fraction of the distance along a normal to the nearest other boundary the "
-        "stack may take: thinner layers where it would take more (gaps, slots, concave "
-        "corners), with a warning");
+        "stack may take: thinner layers where it would take more (gaps, slots), with a "
+        "warning");
+  t.add("cross", &LayerOptions::cross, real(0, 1, "()"),
+        "largest fraction of the depth at which neighbouring normals cross (concave walls and "
+        "corners) the stack may take: thinner layers where it would take more, with a warning");
   t.add("cells", &LayerOptions::quads, choice<bool>({{"triangles", false}, {"quads", true}}),
         "triangles | quads: the layer cells split into two triangles each, or kept as "
         "quadrilaterals along the wall edges (fans at sharp wall nodes stay triangles: their "
@@ -141,7 +150,7 @@ Stage layers_stage() {
   return make_stage<LayerOptions>(
       "layers",
       "boundary layers on walls: room cleared and opened by the elastic analogy, geometric "
-      "layers, thinned where walls are close",
+      "layers, thinned where walls are close or concave",
       t, run);
 }
 
