@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <string>
+#include <unordered_map>
 #include <utility>
 
+#include "core/node_triangles.h"
 #include "core/progress.h"
 #include "layers/plane_geometry.h"
 #include "layers/radius_ratio.h"
@@ -53,9 +55,17 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
     return false;
   };
 
-  std::vector<std::vector<int>> around(m.num_nodes());
-  for (int e = 0; e < m.num_triangles(); ++e)
-    for (int i = 0; i < 3; ++i) around[m.tri(i, e)].push_back(e);
+  // Node -> triangles (core/node_triangles.h), each node's list copied out when
+  // it is first asked for, as only the nodes near the front are: open_room calls
+  // this after every step on the whole mesh.
+  const NodeTriangles incident(m);
+  std::unordered_map<int, std::vector<int>> lists;
+  auto around = [&](int v) -> std::vector<int>& {
+    auto it = lists.find(v);
+    if (it == lists.end())
+      it = lists.emplace(v, std::vector<int>(incident.begin(v), incident.end(v))).first;
+    return it->second;  // stays valid: unordered_map keeps its elements in place
+  };
   std::vector<bool> dead(m.num_triangles(), false), removed(m.num_nodes(), false);
   std::vector<int> gone, mark(m.num_nodes(), -1);
   int stamp = 0;
@@ -69,7 +79,7 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
   }
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const int u = queue[q];
-    for (int e : around[u])
+    for (int e : around(u))
       for (int i = 0; i < 3; ++i) {
         const int v = m.tri(i, e);
         if (near[v] >= 0 || !free[v] || line_of[v] >= 0 || !in_room(m.x.col(v), near[u])) continue;
@@ -79,10 +89,14 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
   }
   auto inside = [&](int v) { return near[v] >= 0 && line_of[v] < 0 && !removed[v]; };
 
+  // Scratch lists of collapse, kept across calls (no allocation per attempt).
+  std::vector<int> shared, apexes, moved, outside;
   auto collapse = [&](int v, int f) {
     // The triangles of edge f v and the apexes they share; v's other triangles.
-    std::vector<int> shared, apexes, moved;
-    for (int e : around[v]) {
+    shared.clear();
+    apexes.clear();
+    moved.clear();
+    for (int e : around(v)) {
       if (corner(m, e, f) >= 0) {
         shared.push_back(e);
         for (int i = 0; i < 3; ++i)
@@ -94,7 +108,7 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
     if (shared.empty()) return false;
     // Manifold: the only common neighbours of f and v are the apexes.
     ++stamp;
-    for (int e : around[f])
+    for (int e : around(f))
       for (int i = 0; i < 3; ++i) mark[m.tri(i, e)] = stamp;
     for (int e : moved)
       for (int i = 0; i < 3; ++i) {
@@ -105,32 +119,32 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
       }
     for (int e : moved) {
       Eigen::Matrix<double, 2, 3> p;
-      std::vector<int> on_front;
+      int on_front[3], fronts = 0;
       for (int i = 0; i < 3; ++i) {
         const int a = m.tri(i, e), b = a == v ? f : a;
         p.col(i) = m.x.col(b);
-        if (line_of[b] >= 0) on_front.push_back(line_of[b]);
+        if (line_of[b] >= 0) on_front[fronts++] = line_of[b];
       }
-      if (!(orient(p.col(0), p.col(1), p.col(2)) > 0) || radius_ratio(p) < min_quality)
-        return false;
       // No triangle across the room: front nodes only of consecutive lines, two at most.
-      if (on_front.size() == 3) return false;
-      if (on_front.size() == 2 && room.next[on_front[0]] != on_front[1] &&
+      if (fronts == 3) return false;
+      if (fronts == 2 && room.next[on_front[0]] != on_front[1] &&
           room.next[on_front[1]] != on_front[0])
+        return false;
+      if (!(orient(p.col(0), p.col(1), p.col(2)) > 0) || radius_ratio(p) < min_quality)
         return false;
     }
     for (int e : shared) {
       dead[e] = true;
       for (int i = 0; i < 3; ++i) {
-        std::vector<int>& list = around[m.tri(i, e)];
+        std::vector<int>& list = around(m.tri(i, e));
         list.erase(std::find(list.begin(), list.end(), e));
       }
     }
     for (int e : moved) {
       m.tri(corner(m, e, v), e) = f;
-      around[f].push_back(e);
+      around(f).push_back(e);
     }
-    around[v].clear();
+    around(v).clear();
     removed[v] = true;
     gone.push_back(v);
     return true;
@@ -143,7 +157,7 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
     std::vector<std::pair<double, std::pair<int, int>>> candidates;  // (distance, (v, f))
     for (int k = 0; k < lines; ++k) {
       const int f = room.front[k];
-      for (int e : around[f])
+      for (int e : around(f))
         for (int i = 0; i < 3; ++i) {
           const int v = m.tri(i, e);
           if (inside(v))
@@ -156,8 +170,8 @@ std::vector<int> clear_room(Mesh& m, const Room& room, const std::vector<bool>& 
       if (removed[v]) continue;
       bool done = collapse(v, f);
       // Else onto another neighbour, those beyond the room first.
-      std::vector<int> outside;
-      for (int e : around[v])
+      outside.clear();
+      for (int e : around(v))
         for (int i = 0; i < 3 && !done; ++i) {
           const int w = m.tri(i, e);
           if (w != v && line_of[w] < 0) outside.push_back(w);

@@ -11,6 +11,7 @@
 #include "layers/clear_room.h"
 #include "layers/edge_flips.h"
 #include "layers/plane_geometry.h"
+#include "layers/radius_ratio.h"
 #include "layers/star_smoothing.h"
 #include "quality/mesh_validity.h"
 
@@ -29,6 +30,26 @@ std::vector<int> moved_triangles(const Mesh& m, const Eigen::Matrix2Xd& before) 
         break;
       }
   return moved;
+}
+
+// Of `moved`, the triangles whose radius ratio (Eq 4.17) is below `below` and
+// those with two nodes of such a triangle (its edge neighbours, and a few
+// more): where a flip can raise the worst, at the cost of the poor triangles,
+// not of every triangle the step moved (flip_edges sorts their edges).
+std::vector<int> poor_and_neighbours(const Mesh& m, const std::vector<int>& moved, double below) {
+  if (!(below < 1)) return moved;
+  std::vector<unsigned char> poor_node(m.num_nodes(), 0);
+  for (int e : moved) {
+    Eigen::Matrix<double, 2, 3> X;
+    for (int i = 0; i < 3; ++i) X.col(i) = m.x.col(m.tri(i, e));
+    if (radius_ratio(X) < below)
+      for (int i = 0; i < 3; ++i) poor_node[m.tri(i, e)] = 1;
+  }
+  std::vector<int> set;
+  for (int e : moved)
+    if (poor_node[m.tri(0, e)] + poor_node[m.tri(1, e)] + poor_node[m.tri(2, e)] >= 2)
+      set.push_back(e);
+  return set;
 }
 
 }  // namespace
@@ -106,6 +127,7 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
     scale = std::max(scale, (target.col(k) - m.x.col(moving[k])).norm());
   const double tolerance = 1e-12 * std::max(scale, 1.0);
   Progress progress("room", 100);
+  double last = 0;  // the fraction of the remaining motion the last step took
 
   while (true) {
     // The common fraction of the remaining motion that folds no triangle of
@@ -139,6 +161,10 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
           if (index[current.tri(i, e)] >= 0) r.bottleneck = index[current.tri(i, e)];
       }
     }
+    // The elastic solve moves the free nodes out of the way, so a step twice the
+    // last accepted one is tried when the fold bound is smaller (deform_mesh
+    // halves it until valid).
+    fraction = std::min(1.0, std::max(fraction, opt.growth * last));
     if (r.steps >= opt.max_steps || !(fraction >= opt.min_fraction)) break;
     progress.update(std::lround(100 * r.reached), "% pushed, step " + std::to_string(r.steps + 1));
     Eigen::Matrix2Xd goal = current.x + fraction * rest;
@@ -149,16 +175,20 @@ RoomResult open_room(const Mesh& m, const std::vector<int>& moving, const Eigen:
     const std::vector<int> moved = moved_triangles(s.mesh, current.x);
     current = s.mesh;
     r.reached += s.reached * fraction * (1 - r.reached);
+    last = s.reached * fraction;
     ++r.steps;
-    if (opt.flips && flip_edges(current, moved) > 0) tris = front_triangles(current);
+    if (opt.flips && flip_edges(current, poor_and_neighbours(current, moved, opt.flip_below)) > 0)
+      tris = front_triangles(current);
     clear();
-    if (!s.complete) break;
+    if (!s.complete && !(opt.growth > 0)) break;
   }
   if (r.complete && opt.smoothing) {
     const Eigen::Matrix2Xd before = current.x;
     progress.update(100, "% pushed, smoothing squeezed triangles");
     r.smoothed = smooth_stars(current, free, floor.empty() ? star_quality(m) : floor);
-    if (r.smoothed > 0 && opt.flips) flip_edges(current, moved_triangles(current, before));
+    if (r.smoothed > 0 && opt.flips)
+      flip_edges(current,
+                 poor_and_neighbours(current, moved_triangles(current, before), opt.flip_below));
   }
   r.mesh = std::move(current);
   return r;

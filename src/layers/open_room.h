@@ -16,7 +16,8 @@
 // element is certified valid); the push stops short once a step would move
 // less than min_fraction of what is left.
 // After each accepted step, edges flip where that raises the worst radius ratio
-// (edge_flips.h): the triangles keep their number and surface, not their nodes.
+// (edge_flips.h) among the moved triangles below flip_below and their
+// neighbours: the triangles keep their number and surface, not their nodes.
 // Once the front is in place, the free nodes whose triangles the push left worse
 // than they were in the input are smoothed (star_smoothing.h), then flipped again.
 #include <Eigen/Core>
@@ -41,11 +42,17 @@ struct RoomOptions {
   double reach = 4;
   double min_fraction = 1e-3;  ///< smallest step, as a fraction of the motion left
   int max_steps = 500;         ///< accepted steps before giving up
-  int max_halvings = 8;        ///< halvings of a failing step before giving up
+  /// > 0: a step takes at least growth times the fraction of the remaining
+  /// motion the last step took (deform_mesh halves it until valid, and a step it
+  /// cannot complete ends short, not the push); 0: the fold bound alone.
+  double growth = 2;
+  int max_halvings = 8;  ///< halvings of a failing step before giving up
   /// > 0: the free nodes within `clear` times the stack's depth of the wall
   /// are removed (clear_room.h) as the front comes; 0: pushed ahead of it.
   double clear = 1.2;
-  bool flips = true;      ///< flip edges after each step (edge_flips.h)
+  bool flips = true;  ///< flip edges after each step (edge_flips.h)
+  /// Flip only round the moved triangles of radius ratio below this (1: all moved).
+  double flip_below = 0.8;
   bool smoothing = true;  ///< smooth the squeezed free nodes at the end (star_smoothing.h)
   LinearSolverOptions solver;
 };

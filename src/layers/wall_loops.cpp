@@ -1,10 +1,10 @@
 #include "layers/wall_loops.h"
 
 #include <algorithm>
-#include <map>
 #include <utility>
 
 #include "core/error.h"
+#include "core/node_triangles.h"
 #include "layers/plane_geometry.h"
 
 namespace homesh {
@@ -19,13 +19,20 @@ std::string node_text(const Mesh& m, int node) {
 }  // namespace
 
 std::vector<WallLoop> wall_loops(const Mesh& m, const std::vector<int>& curves) {
-  // Each undirected triangle edge -> the triangles listing it, with their direction.
-  std::map<std::pair<int, int>, std::vector<std::pair<int, bool>>> edges;
-  for (int e = 0; e < m.num_triangles(); ++e)
-    for (int i = 0; i < 3; ++i) {
-      const int a = m.tri(i, e), b = m.tri((i + 1) % 3, e);
-      edges[{std::min(a, b), std::max(a, b)}].push_back({e, a < b});
-    }
+  // The triangles listing the edge a b (either way), with their direction (from
+  // the smaller node to the larger), found round a (core/node_triangles.h): a
+  // map of every edge cost 5 % of the layers stage.
+  const NodeTriangles round(m);
+  std::vector<std::pair<int, bool>> sides_of;
+  auto triangles_of = [&](int a, int b) -> const std::vector<std::pair<int, bool>>& {
+    sides_of.clear();
+    for (const int* t = round.begin(a); t != round.end(a); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const int p = m.tri(i, *t), q = m.tri((i + 1) % 3, *t);
+        if ((p == a && q == b) || (p == b && q == a)) sides_of.push_back({*t, p < q});
+      }
+    return sides_of;
+  };
 
   const int n = m.num_nodes();
   std::vector<int> next(n, -1), left(n, -1), curve(n, -1), incoming(n, 0);
@@ -37,11 +44,11 @@ std::vector<WallLoop> wall_loops(const Mesh& m, const std::vector<int>& curves) 
   for (int k = 0; k < m.num_lines(); ++k) {
     const bool wall = std::binary_search(curves.begin(), curves.end(), m.line_entity[k]);
     const int a = m.line(0, k), b = m.line(1, k);
-    const auto it = edges.find({std::min(a, b), std::max(a, b)});
-    const std::size_t sides = it == edges.end() ? 0 : it->second.size();
+    const std::vector<std::pair<int, bool>>& found = triangles_of(a, b);
+    const std::size_t sides = found.size();
     if (!wall) {
       if (sides != 1) continue;
-      const auto [e, forward] = it->second.front();
+      const auto [e, forward] = found.front();
       side_tail[k] = forward == (a < b) ? a : b;
       side_head[k] = side_tail[k] == a ? b : a;
       side_left[k] = e;
@@ -54,7 +61,7 @@ std::vector<WallLoop> wall_loops(const Mesh& m, const std::vector<int>& curves) 
       throw Error("layers: the wall line from " + node_text(m, a) + " to " + node_text(m, b) +
                   " on curve " + std::to_string(m.line_entity[k]) + " bounds " +
                   std::to_string(sides) + " triangles; a wall must bound the domain (one)");
-    const auto [e, forward] = it->second.front();
+    const auto [e, forward] = found.front();
     // The triangle is counter-clockwise: its own edge direction has it on the left.
     const int from = forward == (a < b) ? a : b, to = from == a ? b : a;
     if (next[from] >= 0 || incoming[to] > 0)
