@@ -10,7 +10,10 @@
 // fraction at which no triangle with a front node would fold if its other
 // nodes stood still (fold_fraction; for one moving node this is the distance
 // along its path to the opposite edge's line, Fig 4.5a, cap = 1 the thesis'
-// bound), so the thinnest element at the front sizes the step, not a count.
+// bound), so the thinnest element at the front sizes the step, not a count;
+// or, if larger, `growth` times the share of the remaining motion the last step
+// took: the fold bound holds the free nodes still, where the solve moves them
+// out of the way (22 steps -> 7 for NACA-7526's 15 layers on 1e6 triangles).
 // Each step is the elastic deformation of curving/deform_mesh.h posed on the
 // triangles within `reach` of the front (its increments halved until every
 // element is certified valid); the push stops short once a step would move

@@ -52,6 +52,62 @@ WallNormal wall_end_normal(const Eigen::Vector2d& side, const Eigen::Vector2d& x
   return w;
 }
 
+void blend_normals(const Mesh& m, const WallLoop& loop, std::vector<WallNormal>& normals,
+                   int sweeps, double max_scale) {
+  const int n = loop.size();
+  const double limit = M_PI / 6;
+  // Where the wall turns fast: a node whose edges, or a neighbour's, turn by
+  // more than `limit` (30 deg, the corpus' line between smooth and fast walls).
+  // A node on a CAD point (node class dim 0) whose neighbours' edges turn by less
+  // than 10 deg is a corner of the geometry (a box's, a trailing edge), kept
+  // sharp; on a point where the wall turns fast on both sides too (the joint of
+  // two splines at a coarse nose), the wall is smooth and under-resolved.
+  std::vector<bool> fast(n, false);
+  auto turn = [&](int i) { return std::abs(normals[i].angle - M_PI); };
+  auto corner = [&](int i) {
+    const int v = loop.nodes[i];
+    if (!(v < static_cast<int>(m.node_class.size()) && m.node_class[v].dim == 0)) return false;
+    for (int j : {i - 1, i + 1})
+      if ((loop.closed || (j >= 0 && j < n)) && turn((j + n) % n) >= limit / 3) return false;
+    return true;
+  };
+  for (int i = 0; i < n; ++i)
+    if (turn(i) > limit && !corner(i))
+      for (int j : {i - 1, i, i + 1})
+        if (loop.closed || (j >= 0 && j < n)) fast[(j + n) % n] = true;
+  auto single = [&](int i) {
+    return fast[i] && normals[i].directions.size() == 1 && (loop.closed || (i > 0 && i < n - 1));
+  };
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    std::vector<Eigen::Vector2d> blended(n);
+    for (int i = 0; i < n; ++i) {
+      if (!single(i)) continue;
+      const bool has_prev = loop.closed || i > 0, has_next = loop.closed || i < n - 1;
+      Eigen::Vector2d sum = 2 * normals[i].directions[0];
+      // The prev node's normal on the edge prev -> i, its outgoing edge (a fan's
+      // first); the next node's on i -> next, its incoming edge (a fan's last).
+      if (has_prev) sum += normals[(i + n - 1) % n].directions.front();
+      if (has_next) sum += normals[(i + 1) % n].directions.back();
+      blended[i] = sum.normalized();
+    }
+    for (int i = 0; i < n; ++i) {
+      if (!single(i)) continue;
+      const Eigen::Vector2d x = m.x.col(loop.nodes[i]);
+      const Eigen::Vector2d t = (m.x.col(loop.next(i)) - x).normalized();
+      const double theta = normals[i].angle;
+      double phi = ccw_angle(t, blended[i]);
+      if (phi < 0) phi += 2 * M_PI;
+      const double lo = std::max(theta / 2 - limit, std::min(limit, theta / 2)),
+                   hi = std::min(theta / 2 + limit, std::max(theta - limit, theta / 2));
+      phi = std::clamp(phi, lo, hi);
+      normals[i].directions[0] = rotate(t, phi);
+      // The depth kept from both edges' lines, as wall_normal's miter on the bisector.
+      const double sine = std::min(std::sin(phi), std::sin(theta - phi));
+      normals[i].scale = sine > 1 / max_scale ? 1 / sine : max_scale;
+    }
+  }
+}
+
 std::vector<WallNormal> wall_normals(const Mesh& m, const WallLoop& loop,
                                      const NormalOptions& opt) {
   const int n = loop.size();
@@ -67,6 +123,7 @@ std::vector<WallNormal> wall_normals(const Mesh& m, const WallLoop& loop,
     else
       normals.push_back(wall_normal(prev, x, next, opt));
   }
+  if (opt.blend > 0) blend_normals(m, loop, normals, opt.blend, opt.max_scale);
   return normals;
 }
 

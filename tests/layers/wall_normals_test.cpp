@@ -115,7 +115,9 @@ TEST_CASE("wall loops and normals of a square hole in a square box", "[layers]")
     const bool hole = loop.curves[0] == 1;
     CHECK(loop.nodes.size() == (hole ? 8u : 16u));
     CHECK(signed_area(m, loop) == Approx(hole ? -1 : 4));
-    const auto normals = wall_normals(m, loop);
+    NormalOptions bisectors;  // the grid's corners are on curves, not CAD points: unblended
+    bisectors.blend = 0;
+    const auto normals = wall_normals(m, loop, bisectors);
     for (std::size_t i = 0; i < loop.nodes.size(); ++i) {
       const Eigen::Vector2d p = m.x.col(loop.nodes[i]);
       const Eigen::Vector2d c(1, 1);
@@ -158,4 +160,67 @@ TEST_CASE("wall loops refuse unknown names and interfaces, chain open walls", "[
   Mesh inner = m;
   inner.line.col(0) << inner.tri(0, 0), inner.tri(2, 0);
   CHECK_THROWS_WITH(wall_loops(inner, {1, 2}), Catch::Contains("bounds 2 triangles"));
+}
+
+namespace {
+
+// The wall round a body: n nodes clockwise on the unit circle (the domain
+// outside, on the left), node 0 pushed out to radius `bump`.
+std::pair<Mesh, WallLoop> body_loop(int n, double bump) {
+  Mesh m;
+  m.x.resize(2, n);
+  WallLoop loop;
+  for (int i = 0; i < n; ++i) {
+    const double a = -2 * M_PI * i / n;
+    m.x.col(i) = (i == 0 ? bump : 1.0) * Eigen::Vector2d(std::cos(a), std::sin(a));
+    loop.nodes.push_back(i);
+  }
+  return {m, loop};
+}
+
+double angle_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+}
+
+}  // namespace
+
+TEST_CASE("blended normals: unchanged on a circle, smoother at a bump, depth kept", "[layers]") {
+  NormalOptions bisectors, blended;
+  bisectors.blend = 0;
+  blended.blend = 5;
+  {
+    const auto [m, loop] = body_loop(24, 1);
+    const auto own = wall_normals(m, loop, bisectors), smooth = wall_normals(m, loop, blended);
+    for (int i = 0; i < 24; ++i) {
+      CHECK((own[i].directions[0] - smooth[i].directions[0]).norm() < 1e-12);
+      CHECK(own[i].scale == Approx(smooth[i].scale).epsilon(1e-12));
+    }
+  }
+  // Node 0 out at 1.5: the wall turns by about 60 deg there and bends back at its
+  // neighbours, so the bisectors jump; blended, they turn more gradually.
+  const auto [m, loop] = body_loop(24, 1.5);
+  const auto own = wall_normals(m, loop, bisectors), smooth = wall_normals(m, loop, blended);
+  double jump_own = 0, jump_smooth = 0;
+  for (int i = 0; i < 24; ++i) {
+    const int j = (i + 1) % 24;
+    jump_own = std::max(jump_own, angle_between(own[i].directions[0], own[j].directions[0]));
+    jump_smooth =
+        std::max(jump_smooth, angle_between(smooth[i].directions[0], smooth[j].directions[0]));
+    // Within 30 deg of the bisector; the layers keep their depth from both edges' lines.
+    CHECK(angle_between(own[i].directions[0], smooth[i].directions[0]) <= M_PI / 6 + 1e-12);
+    const Eigen::Vector2d x = m.x.col(i), t = (m.x.col(loop.next(i)) - x).normalized();
+    const Eigen::Vector2d in = (m.x.col(loop.prev(i)) - x).normalized();
+    const Eigen::Vector2d step = smooth[i].scale * smooth[i].directions[0];
+    const double from_out = t.x() * step.y() - t.y() * step.x();   // distance to the outgoing line
+    const double from_in = step.x() * in.y() - step.y() * in.x();  // to the incoming line
+    if (smooth[i].scale < M_SQRT2) {
+      CHECK(std::min(from_out, from_in) == Approx(1).epsilon(1e-12));
+    } else {
+      CHECK(std::min(from_out, from_in) <= 1 + 1e-12);
+    }
+  }
+  // The bump's own node keeps its bisector (symmetry).
+  CHECK((own[0].directions[0] - smooth[0].directions[0]).norm() < 1e-12);
+  CHECK(jump_own > 0.5);
+  CHECK(jump_smooth < 0.6 * jump_own);
 }

@@ -138,6 +138,10 @@ Stage layers_stage() {
   t.add(
       "fan_angle", [](LayerOptions& o) -> double& { return o.normals.fan_angle; },
       real(180, 360, "[)"), "domain angle (deg) from which a wall node gets a fan");
+  t.add(
+      "blend", [](LayerOptions& o) -> int& { return o.normals.blend; }, integer(0, 100),
+      "sweeps blending the single normals along the wall (each within 30 deg of its "
+      "bisector) where the wall turns by more than 30 deg; 0: every node's own bisector");
   add_analogy_options(
       t, [](LayerOptions& o) -> std::string& { return o.room.formulation; },
       [](LayerOptions& o) -> FormulationParams& { return o.room.params; },
