@@ -149,8 +149,9 @@ def run_one(name, msh, p, method, timeout, rebuild, build_timeout=600):
     return rec, result
 
 
-def prepare(c, meshes):
-    """Build case c once in a child process and write its linear mesh; its record."""
+def in_child(make):
+    """make() in a fresh Gmsh session in a forked child process: its value, or the first line
+    of its error (or the child's exit code) as a string."""
     ctx = mp.get_context("fork")
     q = ctx.SimpleQueue()
 
@@ -159,15 +160,19 @@ def prepare(c, meshes):
         gmsh.initialize()
         gmsh.option.setNumber("General.Terminal", 0)
         try:
-            q.put(corpus.write(c, os.path.join(meshes, c.name + ".msh")))
+            q.put(make())
         except Exception as e:
             q.put(first_line(e))
         gmsh.finalize()
     proc = ctx.Process(target=work)
     proc.start()
     proc.join()
-    r = q.get() if not q.empty() else f"exit code {proc.exitcode}"
-    return r
+    return q.get() if not q.empty() else f"exit code {proc.exitcode}"
+
+
+def prepare(c, meshes):
+    """Build case c once in a child process and write its linear mesh; its record."""
+    return in_child(lambda: corpus.write(c, os.path.join(meshes, c.name + ".msh")))
 
 
 # ---------------------------------------------------------------- report

@@ -30,7 +30,6 @@ twins), OUT/layers_corpus.md (tables and the summary) and OUT/layers_corpus.png.
 import argparse
 import csv
 import math
-import multiprocessing as mp
 import os
 import sys
 
@@ -48,22 +47,7 @@ LINEAR_FIELDS = ["geometry", "first", "ratio", "layers", "gmsh_triangles", "gmsh
 
 def built(c):
     """corpus.build(c) in a fresh Gmsh session in a child process: its record, or an error."""
-    ctx = mp.get_context("fork")
-    q = ctx.SimpleQueue()
-
-    def work():
-        import gmsh
-        gmsh.initialize()
-        gmsh.option.setNumber("General.Terminal", 0)
-        try:
-            q.put(corpus.build(c))
-        except Exception as e:
-            q.put(curving_corpus.first_line(e))
-        gmsh.finalize()
-    proc = ctx.Process(target=work)
-    proc.start()
-    proc.join()
-    return q.get() if not q.empty() else f"exit code {proc.exitcode}"
+    return curving_corpus.in_child(lambda: corpus.build(c))
 
 
 def geometry(name):
