@@ -706,6 +706,16 @@ def wall_edges(walls):
     return edges
 
 
+def radius_ratios(corners):
+    """Eq 4.17 per triangle (corners #T x 3 x 2): Q = 8 (s-a)(s-b)(s-c) / (a b c), s the half
+    perimeter; 1 equilateral, 0 degenerate."""
+    a = np.linalg.norm(corners[:, 1] - corners[:, 2], axis=1)
+    b = np.linalg.norm(corners[:, 2] - corners[:, 0], axis=1)
+    c = np.linalg.norm(corners[:, 0] - corners[:, 1], axis=1)
+    s = (a + b + c) / 2
+    return 8 * (s - a) * (s - b) * (s - c) / (a * b * c)
+
+
 def record(c, walls):
     """Counts, the wall's turning angles and the first-cell height of the current model."""
     x = _coords()
@@ -756,15 +766,12 @@ def record(c, walls):
                         if h < heights.get(v, math.inf):
                             heights[v] = h
     h = np.array(list(heights.values())) if heights else np.array([math.nan])
-    # Worst radius ratio (thesis Eq 4.17) of the linear triangles: 8 (s-a)(s-b)(s-c) / (a b c).
+    # Worst radius ratio (thesis Eq 4.17) of the linear triangles.
     tri = [T for T in cells if T.shape[1] == 3]
     rr = math.nan
     if tri:
-        P = np.concatenate([np.array([x[v] for v in T.ravel()]).reshape(-1, 3, 2)
-                            for T in tri])
-        a, b, e = (np.linalg.norm(P[:, i] - P[:, j], axis=1) for i, j in ((1, 2), (2, 0), (0, 1)))
-        sp = (a + b + e) / 2
-        rr = float((8 * (sp - a) * (sp - b) * (sp - e) / (a * b * e)).min())
+        rr = float(radius_ratios(np.concatenate(
+            [np.array([x[v] for v in T.ravel()]).reshape(-1, 3, 2) for T in tri])).min())
     rec = dict(case=c.name, shape=c.shape, mesher=c.mesher, h_wall=c.h_wall, first=c.first,
                layers=c.n, ratio=c.ratio if c.n else "", triangles=triangles, other_2d=others,
                wall_edges=len(edges), first_min=float(h.min()), first_median=float(np.median(h)),

@@ -46,6 +46,7 @@ import time
 
 import gmsh
 import homesh
+from corpus import radius_ratios
 from gmsh_referee import referee
 import numpy as np
 
@@ -134,15 +135,6 @@ def triangle_corners():
         corners.append(x[index[enodes.astype(int)].reshape(-1, nodes)[:, :3]])
         elements.append(etags)
     return np.concatenate(corners), np.concatenate(elements)
-
-
-def radius_ratios(corners):
-    """Eq 4.17 per triangle: Q = 8 (s-a)(s-b)(s-c) / (a b c), s = (a + b + c) / 2."""
-    a = np.linalg.norm(corners[:, 1] - corners[:, 2], axis=1)
-    b = np.linalg.norm(corners[:, 2] - corners[:, 0], axis=1)
-    c = np.linalg.norm(corners[:, 0] - corners[:, 1], axis=1)
-    s = (a + b + c) / 2
-    return 8 * (s - a) * (s - b) * (s - c) / (a * b * c)
 
 
 def homesh_view_min():

@@ -93,8 +93,8 @@ void check_mesh(const Mesh& m, const std::string& source) {
                   " from the origin; homesh accepts coordinates up to " +
                   fmt_number(limits::kMaxCoordinate));
   }
-  // Sorted corner triples, sorted: a duplicate is a run of equal triples (a
-  // std::set of them cost a second at 1e6 triangles).
+  // Each triangle's sorted corner triple, then the triples sorted: a duplicate
+  // is a run of equal triples (a std::set of them cost a second at 1e6 triangles).
   std::vector<std::pair<std::array<int, 3>, int>> corners;
   corners.reserve(m.num_triangles());
   for (int e = 0; e < m.num_triangles(); ++e) {

@@ -62,8 +62,8 @@ StackFit fit_stack(const Mesh& m, const std::vector<int>& origin, const Eigen::M
   // Concave walls: consecutive lines k, j converge where the top edge of their
   // cell at depth D, t + D u (t = w_j - w_k, u = s_j n_j - s_k n_k), has no
   // length left along the wall edge: D* = -|t|^2 / (t . u) if t . u < 0. The
-  // stack takes fill of it on both lines (thinning both by one factor keeps D*
-  // over the stack's depth). Fans (lines of one wall node, t = 0) diverge.
+  // stack takes `cross` of it on both lines (thinning both by one factor keeps
+  // D* over the stack's depth). Fans (lines of one wall node, t = 0) diverge.
   std::vector<bool> crossing(lines, false);
   for (int k = 0; k < lines; ++k) {
     const int j = next[k];

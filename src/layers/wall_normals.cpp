@@ -82,13 +82,12 @@ void blend_normals(const Mesh& m, const WallLoop& loop, std::vector<WallNormal>&
     std::vector<Eigen::Vector2d> blended(n);
     for (int i = 0; i < n; ++i) {
       if (!single(i)) continue;
-      const bool has_prev = loop.closed || i > 0, has_next = loop.closed || i < n - 1;
-      Eigen::Vector2d sum = 2 * normals[i].directions[0];
       // The prev node's normal on the edge prev -> i, its outgoing edge (a fan's
       // first); the next node's on i -> next, its incoming edge (a fan's last).
-      if (has_prev) sum += normals[(i + n - 1) % n].directions.front();
-      if (has_next) sum += normals[(i + 1) % n].directions.back();
-      blended[i] = sum.normalized();
+      // (A blended node has both: open ends are not blended.)
+      blended[i] = (2 * normals[i].directions[0] + normals[(i + n - 1) % n].directions.front() +
+                    normals[(i + 1) % n].directions.back())
+                       .normalized();
     }
     for (int i = 0; i < n; ++i) {
       if (!single(i)) continue;
