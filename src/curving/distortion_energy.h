@@ -63,4 +63,18 @@ double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab
                          const Eigen::Matrix2d& T, const DistortionEnergyOptions& opt,
                          Eigen::Matrix2Xd* gradient = nullptr, int node = -1);
 
+/// E_e as above with its gradient (2 by n) and its exact Hessian by the 2 n node
+/// coordinates (node k's (x, y) at rows and columns 2 k, 2 k + 1), both left untouched
+/// if E_e is +infinity. The chain rule through the per-point Jacobians J_i = X D_i and
+/// the element's A: with Phi(J, A) = N / A and A(J) = sum_i w_i det J_i,
+///   d2E/dJ_i dJ_k = delta_ik (w_i f_i,JJ / A + Phi_A w_i d2(det)/dJ2)
+///                 + c_i a_k^T + a_i c_k^T + Phi_AA a_i a_k^T,
+/// a_i = w_i cof J_i (dA/dJ_i), c_i = d2Phi/dJ_i dA, f_i = |J_i| Theta_i^r; the
+/// per-point blocks go to X by D_i, the rank-2 coupling by dA/dX and sum_i c_i D_i^T.
+/// What the whole-patch Newton steps (curving/patch_newton.h) assemble: exact, and a
+/// fraction of the cost of differencing the gradient (2 n gradients per element).
+double distortion_energy_hessian(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
+                                 const Eigen::Matrix2d& T, const DistortionEnergyOptions& opt,
+                                 Eigen::Matrix2Xd& gradient, Eigen::MatrixXd& hessian);
+
 }  // namespace homesh

@@ -66,7 +66,8 @@ class PatchNewton {
       if (sliding(i)) s_.point(free_[i], s_.u[free_[i]], &tangent[i]);
     g.setZero(dofs());
     std::vector<Eigen::Triplet<double>> entries;
-    Eigen::Matrix2Xd G, Gh;
+    Eigen::Matrix2Xd G;
+    Eigen::MatrixXd Hx, Hl;
     for (std::size_t le = 0; le < elements_.size(); ++le) {
       const std::vector<Slot>& slots = slots_[le];
       const int L = static_cast<int>(slots.size());
@@ -74,47 +75,43 @@ class PatchNewton {
       Eigen::Matrix2Xd X = gather(le);
       const Eigen::Matrix2d& T = (*p_.targets)[le];
       const ElementTabulation& et = tab(le);
-      distortion_energy(X, et, T, p_.energy, &G);
-      // Local coordinates (2 per slot) to dofs: the identity, or a sliding node's tangent.
-      std::vector<int> dof;
-      for (const Slot& a : slots)
-        for (int c = 0; c < (sliding(a.free) ? 1 : 2); ++c) dof.push_back(first_[a.free] + c);
-      Eigen::MatrixXd P = Eigen::MatrixXd::Zero(2 * L, static_cast<int>(dof.size()));
-      Eigen::VectorXd gl(2 * L);
-      for (int a = 0, c = 0; a < L; ++a) {
-        gl.segment<2>(2 * a) = G.col(slots[a].k);
-        if (sliding(slots[a].free)) {
-          P.block<2, 1>(2 * a, c++) = tangent[slots[a].free];
-        } else {
-          P(2 * a, c++) = 1;
-          P(2 * a + 1, c++) = 1;
-        }
-      }
-      // Forward differences of the gradient, step a millionth of the element's height.
-      const double h = 1e-6 * height(le);
-      Eigen::MatrixXd Hl(2 * L, 2 * L);
+      distortion_energy_hessian(X, et, T, p_.energy, G, Hx);
+      // The free slots' rows and columns of the element's exact Hessian; a
+      // quadrilateral's projected onto the positive semi-definite matrices (see the header).
+      Hl.resize(2 * L, 2 * L);
       for (int a = 0; a < L; ++a)
-        for (int c = 0; c < 2; ++c) {
-          const double old = X(c, slots[a].k);
-          X(c, slots[a].k) = old + h;
-          const double Eh = distortion_energy(X, et, T, p_.energy, &Gh);
-          X(c, slots[a].k) = old;
-          for (int b = 0; b < L; ++b)
-            Hl.block<2, 1>(2 * b, 2 * a + c) =
-                std::isfinite(Eh) ? Eigen::Vector2d((Gh.col(slots[b].k) - G.col(slots[b].k)) / h)
-                                  : Eigen::Vector2d::Zero();
+        for (int b = 0; b < L; ++b)
+          Hl.block<2, 2>(2 * b, 2 * a) = Hx.block<2, 2>(2 * slots[b].k, 2 * slots[a].k);
+      if (elements_[le] >= m_.num_triangles()) Hl = positive_part(0.5 * (Hl + Hl.transpose()));
+      // To the dofs: a free node's (x, y) as they are, a sliding node's by its tangent
+      // (d/du = C'(u) . d/dx).
+      for (int a = 0; a < L; ++a) {
+        const int fa = slots[a].free, da = first_[fa];
+        const Eigen::Vector2d ga = G.col(slots[a].k);
+        if (sliding(fa)) {
+          g(da) += tangent[fa].dot(ga);
+        } else {
+          g(da) += ga(0);
+          g(da + 1) += ga(1);
         }
-      // A quadrilateral's projected onto the positive semi-definite matrices (see the
-      // header); a triangle's as it is (the same expression as before quadrilaterals came,
-      // so that triangle-only results stay bit for bit).
-      const Eigen::MatrixXd Hd =
-          elements_[le] < m_.num_triangles()
-              ? Eigen::MatrixXd(P.transpose() * (0.5 * (Hl + Hl.transpose())) * P)
-              : Eigen::MatrixXd(P.transpose() * positive_part(0.5 * (Hl + Hl.transpose())) * P);
-      const Eigen::VectorXd gd = P.transpose() * gl;
-      for (int r = 0; r < Hd.rows(); ++r) {
-        g(dof[r]) += gd(r);
-        for (int c = 0; c < Hd.cols(); ++c) entries.emplace_back(dof[r], dof[c], Hd(r, c));
+        for (int b = 0; b < L; ++b) {
+          const int fb = slots[b].free, db = first_[fb];
+          const Eigen::Matrix2d h = Hl.block<2, 2>(2 * b, 2 * a);  // rows b, columns a
+          if (sliding(fa) && sliding(fb)) {
+            entries.emplace_back(db, da, tangent[fb].dot(h * tangent[fa]));
+          } else if (sliding(fa)) {
+            const Eigen::Vector2d c = h * tangent[fa];
+            entries.emplace_back(db, da, c(0));
+            entries.emplace_back(db + 1, da, c(1));
+          } else if (sliding(fb)) {
+            const Eigen::RowVector2d c = tangent[fb].transpose() * h;
+            entries.emplace_back(db, da, c(0));
+            entries.emplace_back(db, da + 1, c(1));
+          } else {
+            for (int i = 0; i < 2; ++i)
+              for (int j = 0; j < 2; ++j) entries.emplace_back(db + i, da + j, h(i, j));
+          }
+        }
       }
     }
     H.resize(dofs(), dofs());
@@ -178,9 +175,6 @@ class PatchNewton {
   const ElementTabulation& tab(std::size_t le) const {
     return elements_[le] < m_.num_triangles() ? *p_.tab : *p_.quad_tab;
   }
-
-  // Smallest height of the straight element through element le's corners (element_lengths).
-  double height(std::size_t le) const { return element_lengths(m_, x_, elements_[le]).first; }
 
   const PatchProblem& p_;
   const Mesh& m_;

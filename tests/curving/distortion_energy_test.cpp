@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
 #include "quality/ideal_jacobian.h"
 
@@ -93,4 +94,55 @@ TEST_CASE("distortion energy: the gradient matches central differences", "[curvi
             CHECK(g(c, k) == Approx(fd).epsilon(1e-5).margin(1e-6 * std::abs(E) + 1e-8));
           }
       }
+}
+
+TEST_CASE("distortion energy: the analytic Hessian matches differences of the gradient",
+          "[curving]") {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (bool quad : {false, true})
+    for (int p : {1, 2, 3, 5})
+      for (double alpha : {0.0, 1.0, 100.0})
+        for (double r : {2.0, 3.0}) {
+          CAPTURE(quad, p, alpha, r);
+          // The optimiser's tabulation: Gauss points and the lattice of det J's coefficients.
+          const ElementTabulation tab =
+              quad ? tabulate_quad_element_and_lattice(p, 2 * p, 0.2)
+                   : tabulate_element_and_lattice(p, 2 * p, p > 1 ? 0.2 : 0.0);
+          DistortionEnergyOptions opt;
+          opt.alpha = alpha;
+          opt.r = r;
+          // A sheared element (a thin one on the quadrilateral) with its nodes perturbed.
+          const Eigen::Matrix2Xd uv = quad ? quad_reference_nodes(p) : reference_nodes(p);
+          Eigen::Matrix2d F;
+          F << 1, 0.3, quad ? 0.0 : 0.1, quad ? 0.05 : 0.7;
+          Eigen::Matrix2Xd X = F * uv;
+          for (int k = 0; k < X.cols(); ++k)
+            X.col(k) += (quad ? 0.0004 : 0.01) * Eigen::Vector2d(u(rng), u(rng));
+          Eigen::Matrix2d T;
+          T << 1.3, 0.2, -0.1, 0.9;
+          Eigen::Matrix2Xd g, g0;
+          Eigen::MatrixXd H;
+          const double E = distortion_energy_hessian(X, tab, T, opt, g, H);
+          REQUIRE(std::isfinite(E));
+          CHECK(E == Approx(distortion_energy(X, tab, T, opt, &g0)).epsilon(1e-12));
+          CHECK((g - g0).norm() <= 1e-10 * g0.norm() + 1e-14);
+          const int n = static_cast<int>(X.cols());
+          REQUIRE(H.rows() == 2 * n);
+          CHECK((H - H.transpose()).norm() <= 1e-12 * H.norm());
+          // Central differences of the analytic gradient, column by column.
+          const double h = 1e-6 * 0.05;
+          Eigen::MatrixXd fd(2 * n, 2 * n);
+          for (int k = 0; k < n; ++k)
+            for (int c = 0; c < 2; ++c) {
+              Eigen::Matrix2Xd Xp = X, Xm = X, gp, gm;
+              Xp(c, k) += h;
+              Xm(c, k) -= h;
+              distortion_energy(Xp, tab, T, opt, &gp);
+              distortion_energy(Xm, tab, T, opt, &gm);
+              const Eigen::Matrix2Xd dg = (gp - gm) / (2 * h);
+              fd.col(2 * k + c) = Eigen::Map<const Eigen::VectorXd>(dg.data(), 2 * n);
+            }
+          CHECK((H - fd).norm() <= 1e-5 * fd.norm());
+        }
 }
