@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdio>
 
+#include "core/allocator_tuning.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "pipeline/output_format.h"
@@ -150,6 +151,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  homesh::tune_allocator();  // core/allocator_tuning.h says why
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   // Past a file-size limit, writes fail with EFBIG and homesh says so, instead

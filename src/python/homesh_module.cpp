@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 
 #include "api/homesh.h"
+#include "core/allocator_tuning.h"
 
 namespace py = pybind11;
 
@@ -66,6 +67,7 @@ void write_file(const std::string& path, bool keep_invalid) {
 PYBIND11_MODULE(homesh, m) {
   using namespace homesh;
   m.doc() = "homesh: curved, valid high-order triangle meshes on the current Gmsh model";
+  tune_allocator();  // core/allocator_tuning.h says why (HOMESH_MALLOC=default: not)
   static py::exception<Error> error(m, "Error");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
