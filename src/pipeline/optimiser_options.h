@@ -8,8 +8,9 @@
 
 namespace homesh {
 
-/// Adds threshold, sweeps and slide to `table`, read into the OptimiseOptions that
-/// `optimiser` gives (a pointer to a data member of T or a callable T& -> OptimiseOptions&).
+/// Adds threshold, sweeps, newton, newton_tol, lattice and slide to `table`, read into the
+/// OptimiseOptions that `optimiser` gives (a pointer to a data member of T or a callable T& ->
+/// OptimiseOptions&).
 template <class T, class Optimiser>
 void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
   const std::function<OptimiseOptions&(T&)> o = optimiser;
@@ -22,6 +23,10 @@ void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
   table.add(
       "newton", [o](T& t) -> int& { return o(t).newton_iterations; }, integer(0, 10000),
       "most whole-patch Newton steps per patch, before the sweeps (0: sweeps only)");
+  table.add(
+      "newton_tol", [o](T& t) -> double& { return o(t).newton_tolerance; }, real(0),
+      "a Newton step whose predicted decrease is below this fraction of the patch energy ends "
+      "the steps");
   table.add(
       "lattice", [o](T& t) -> double& { return o(t).lattice_weight; }, real(0, 1, "[)"),
       "share of the energy's weight on the order 2(p-1) lattice (corners and edges)");

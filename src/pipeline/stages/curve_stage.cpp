@@ -176,6 +176,9 @@ Stage curve_stage() {
         "grown by this many rings, kept if that reaches `placed` (0: never)");
   t.add("optimise", &CurveOptions::optimise, boolean(),
         "after the elastic solve, optimise the patches round elements below the threshold");
+  t.add(
+      "patch_rings", [](CurveOptions& o) -> int& { return o.optimiser.layers; }, integer(0, 100),
+      "the optimiser's patches: its poor elements grown by this many rings of neighbours");
   add_optimiser_options(t, [](CurveOptions& o) -> OptimiseOptions& { return o.optimiser; });
   t.add(
       "corner", [](CurveOptions& o) -> double& { return o.boundary.corner_degrees; },
