@@ -163,7 +163,8 @@ Stage voronoi_stage() {
   for (const VoronoiEngine& e : voronoi_engines()) engines.push_back(e.name);
   OptionTable<O> t;
   t.add("metric", &O::metric, text(),
-        "iso (the sizes of the mesh stage's default mesh) | bl (iso, 5 times finer across "
+        "iso (the sizes of the mesh stage's default mesh, which follows the .geo's size "
+        "fields, its Background Field included) | bl (iso, 5 times finer across "
         "the walls: curves not in a group 'farfield') | viewN (the tensor view of tag N, "
         "e.g. merged by the .geo) | FILE.pos or FILE.msh (its last view, a tensor field) "
         "| FILE (a coarse grid of 2x2 SPD tensors, format in src/voronoi/voronoi_files.h)");
