@@ -16,6 +16,36 @@ Eigen::Matrix2d cofactor(const Eigen::Matrix2d& J) {
   return C;
 }
 
+// dX/du, dX/dv (coefficient products: the matrices are small) and det J at every
+// point, and A = sum_i w_i det J_i.
+struct PointJacobians {
+  Eigen::Matrix2Xd Ju, Jv;
+  std::vector<double> d;
+  double A = 0;
+};
+
+// Fills pj; false (E_e = +infinity) if det J <= 0 at a point, or below the barrier
+// floor epsilon times the element's mean |J| (A over the reference element's area:
+// 2 A on the triangle, area 1/2; A on the square).
+bool point_jacobians(const Eigen::Matrix2Xd& X, const ElementTabulation& tab, double epsilon,
+                     PointJacobians& pj) {
+  const int q = static_cast<int>(tab.rule.weights.size());
+  const Eigen::VectorXd& w = tab.rule.weights;
+  pj.Ju.noalias() = X.lazyProduct(tab.dNdu);
+  pj.Jv.noalias() = X.lazyProduct(tab.dNdv);
+  pj.d.resize(q);
+  pj.A = 0;
+  for (int i = 0; i < q; ++i) {
+    pj.d[i] = pj.Ju(0, i) * pj.Jv(1, i) - pj.Jv(0, i) * pj.Ju(1, i);
+    if (!(pj.d[i] > 0)) return false;
+    pj.A += w(i) * pj.d[i];
+  }
+  const double mean = tab.quad ? 1.0 : 2.0;
+  for (int i = 0; i < q; ++i)
+    if (pj.d[i] <= epsilon * mean * pj.A) return false;
+  return true;
+}
+
 }  // namespace
 
 double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
@@ -24,27 +54,17 @@ double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const int q = static_cast<int>(tab.rule.weights.size());
   const Eigen::VectorXd& w = tab.rule.weights;
+  thread_local PointJacobians pj;
+  if (!point_jacobians(X, tab, opt.epsilon, pj)) return kInf;
+  const std::vector<double>& d = pj.d;
+  const double A = pj.A;
   thread_local std::vector<Eigen::Matrix2d> J;
-  thread_local std::vector<double> d;
-  // dX/du, dX/dv at every point (coefficient products: the matrices are small).
-  thread_local Eigen::Matrix2Xd Ju, Jv;
   J.resize(q);
-  d.resize(q);
-  Ju.noalias() = X.lazyProduct(tab.dNdu);
-  Jv.noalias() = X.lazyProduct(tab.dNdv);
-  double A = 0;
   for (int i = 0; i < q; ++i) {
-    J[i].col(0) = Ju.col(i);
-    J[i].col(1) = Jv.col(i);
-    d[i] = J[i].determinant();
-    if (!(d[i] > 0)) return kInf;
-    A += w(i) * d[i];
+    J[i].col(0) = pj.Ju.col(i);
+    J[i].col(1) = pj.Jv.col(i);
   }
-  // The element's mean |J| is A over the reference element's area: 2 A on the
-  // triangle (area 1/2), A on the square.
-  const double mean = tab.quad ? 1.0 : 2.0;
-  for (int i = 0; i < q; ++i)
-    if (d[i] <= opt.epsilon * mean * A) return kInf;
+  const double mean = tab.quad ? 1.0 : 2.0;  // the reference element's area is 1 / mean
   const double detT = T.determinant();
   const Eigen::Matrix2d M = T * T.transpose();
   const double r = opt.r, alpha = opt.alpha;
@@ -109,20 +129,12 @@ double distortion_energy_hessian(const Eigen::Matrix2Xd& X, const ElementTabulat
   const int q = static_cast<int>(tab.rule.weights.size());
   const int n = static_cast<int>(X.cols());
   const Eigen::VectorXd& w = tab.rule.weights;
-  thread_local Eigen::Matrix2Xd Ju, Jv;
-  thread_local std::vector<double> d;
-  Ju.noalias() = X.lazyProduct(tab.dNdu);
-  Jv.noalias() = X.lazyProduct(tab.dNdv);
-  d.resize(q);
-  double A = 0;
-  for (int i = 0; i < q; ++i) {
-    d[i] = Ju(0, i) * Jv(1, i) - Jv(0, i) * Ju(1, i);
-    if (!(d[i] > 0)) return kInf;
-    A += w(i) * d[i];
-  }
+  thread_local PointJacobians pj;
+  if (!point_jacobians(X, tab, opt.epsilon, pj)) return kInf;
+  const Eigen::Matrix2Xd &Ju = pj.Ju, &Jv = pj.Jv;
+  const std::vector<double>& d = pj.d;
+  const double A = pj.A;
   const double mean = tab.quad ? 1.0 : 2.0;
-  for (int i = 0; i < q; ++i)
-    if (d[i] <= opt.epsilon * mean * A) return kInf;
   const double detT = T.determinant();
   const Eigen::Matrix2d M = T * T.transpose();
   const double r = opt.r, alpha = opt.alpha, mA = mean * A;
