@@ -14,14 +14,7 @@
 #include <string>
 
 #include "core/error.h"
-
-#if defined(__SANITIZE_ADDRESS__)
-#define HOMESH_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define HOMESH_ASAN 1
-#endif
-#endif
+#include "core/sanitizers.h"
 
 namespace homesh::gmsh_adapter {
 namespace {

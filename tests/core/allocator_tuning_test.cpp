@@ -6,21 +6,17 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/sanitizers.h"
+
 TEST_CASE("allocator tuning: applied on glibc unless HOMESH_MALLOC=default", "[core]") {
   const char* env = std::getenv("HOMESH_MALLOC");
   const bool declined = env && std::strcmp(env, "default") == 0;
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define HOMESH_TEST_ASAN 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(HOMESH_TEST_ASAN)
-  const bool expected = false;  // ASan's allocator refuses mallopt
-  (void)declined;
-#elif defined(__GLIBC__)
-  const bool expected = !declined;
+#if defined(__GLIBC__)
+  // ASan's allocator refuses mallopt.
+  const bool expected = !declined && !homesh::kAddressSanitizer;
 #else
   const bool expected = false;
+  (void)declined;
 #endif
   CHECK(homesh::tune_allocator() == expected);
   CHECK(homesh::tune_allocator() == expected);  // once: the same answer, nothing redone
