@@ -159,7 +159,8 @@ double distortion_energy_hessian(const Eigen::Matrix2Xd& X, const ElementTabulat
     Eigen::Matrix2d J;
     J.col(0) = Ju.col(i);
     J.col(1) = Jv.col(i);
-    const Vec4 C(J(1, 1), -J(0, 1), -J(1, 0), J(0, 0));  // vec of cof(J)
+    const Eigen::Matrix2d cofactor_J = cofactor(J);
+    const Vec4 C = Eigen::Map<const Vec4>(cofactor_J.data());  // vec of cof(J)
     cof[i] = C;
     const Eigen::Matrix2d JM = J * M;
     const Vec4 gJ = Eigen::Map<const Vec4>(JM.data()) / detT;  // d(|JT|^2 / (2 detT))/dJ
