@@ -88,21 +88,11 @@ std::vector<std::vector<int>> node_neighbours(const ElementNodes& en, const Inci
   return out;
 }
 
-// A compressed pattern from its columns' sorted row lists, values zero.
-Eigen::SparseMatrix<double> compressed(int size, const std::vector<int>& outer,
-                                       const std::vector<int>& inner) {
-  Eigen::SparseMatrix<double> K(size, size);
-  K.resizeNonZeros(Eigen::Index(inner.size()));
-  std::copy(outer.begin(), outer.end(), K.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), K.innerIndexPtr());
-  std::fill_n(K.valuePtr(), inner.size(), 0.0);
-  return K;
-}
-
 // Dof 2 node + component. Lower: every diagonal, and (r, c), r > c, for free
 // dofs r, c of nodes sharing an element. Coupling: (r, c), r free, c fixed.
+template <typename Pattern>
 void dof_patterns(const std::vector<std::vector<int>>& neighbours, const std::vector<char>& fixed,
-                  Eigen::SparseMatrix<double>& lower, Eigen::SparseMatrix<double>& coupling) {
+                  Pattern& lower, Pattern& coupling) {
   const int num_dofs = int(fixed.size());
   std::vector<int> outer(num_dofs + 1, 0), inner, c_outer(num_dofs + 1, 0), c_inner;
   for (int i = 0; i < num_dofs / 2; ++i) {
@@ -130,8 +120,8 @@ void dof_patterns(const std::vector<std::vector<int>>& neighbours, const std::ve
       c_outer[col + 1] = int(c_inner.size());
     }
   }
-  lower = compressed(num_dofs, outer, inner);
-  coupling = compressed(num_dofs, c_outer, c_inner);
+  lower = {std::move(outer), std::move(inner)};
+  coupling = {std::move(c_outer), std::move(c_inner)};
 }
 
 // Per-thread workspace of the element loop.
@@ -208,19 +198,27 @@ ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& 
 
 namespace {
 
-// Whether K has exactly the pattern P (compressed).
-bool same_pattern(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& P) {
-  return K.rows() == P.rows() && K.cols() == P.cols() && K.isCompressed() &&
-         K.nonZeros() == P.nonZeros() &&
-         std::equal(P.outerIndexPtr(), P.outerIndexPtr() + P.cols() + 1, K.outerIndexPtr()) &&
-         std::equal(P.innerIndexPtr(), P.innerIndexPtr() + P.nonZeros(), K.innerIndexPtr());
+// Whether K has exactly the pattern (outer, inner), compressed.
+bool same_pattern(const Eigen::SparseMatrix<double>& K, const std::vector<int>& outer,
+                  const std::vector<int>& inner) {
+  const Eigen::Index n = Eigen::Index(outer.size()) - 1;
+  return K.rows() == n && K.cols() == n && K.isCompressed() &&
+         K.nonZeros() == Eigen::Index(inner.size()) &&
+         std::equal(outer.begin(), outer.end(), K.outerIndexPtr()) &&
+         std::equal(inner.begin(), inner.end(), K.innerIndexPtr());
 }
 
-void reset(Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& P) {
-  if (same_pattern(K, P))
-    std::fill_n(K.valuePtr(), K.nonZeros(), 0.0);
-  else
-    K = P;
+// K with the pattern (outer, inner) and every value zero; its storage reused if it has it.
+void reset(Eigen::SparseMatrix<double>& K, const std::vector<int>& outer,
+           const std::vector<int>& inner) {
+  if (!same_pattern(K, outer, inner)) {
+    const Eigen::Index n = Eigen::Index(outer.size()) - 1;
+    K.resize(n, n);
+    K.resizeNonZeros(Eigen::Index(inner.size()));
+    std::copy(outer.begin(), outer.end(), K.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), K.innerIndexPtr());
+  }
+  std::fill_n(K.valuePtr(), K.nonZeros(), 0.0);
 }
 
 }  // namespace
@@ -231,8 +229,8 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
   if (x.cols() * 2 != num_dofs)
     throw Error("assemble_elasticity: " + std::to_string(x.cols()) + " positions for " +
                 std::to_string(num_dofs / 2) + " nodes");
-  reset(sys.K, pattern_);
-  reset(sys.coupling, coupling_pattern_);
+  reset(sys.K, pattern_.outer, pattern_.inner);
+  reset(sys.coupling, coupling_pattern_.outer, coupling_pattern_.inner);
   sys.load = Eigen::VectorXd::Zero(num_dofs);
   const int *outer = sys.K.outerIndexPtr(), *inner = sys.K.innerIndexPtr();
   const int *c_outer = sys.coupling.outerIndexPtr(), *c_inner = sys.coupling.innerIndexPtr();
