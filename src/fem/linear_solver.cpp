@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "fem/amd_ldlt.h"
 #include "fem/cholmod_solver.h"
 #include "fem/conjugate_gradient.h"
 #include "fem/preconditioner.h"
@@ -24,15 +25,17 @@ struct Backend {
 };
 
 struct Ldlt : Backend {
-  Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
-  void analyze(const Matrix& K) override { solver.analyzePattern(K); }
+  AmdLdlt factor;
+  void analyze(const Matrix& K) override { factor.analyze(K); }
   void factorize(const Matrix& K) override {
-    solver.factorize(K);
-    if (solver.info() != Eigen::Success)
-      throw Error("solve_linear_system: ldlt factorisation failed (matrix not positive definite?)");
+    try {
+      factor.factorize(K);
+    } catch (const Error& e) {
+      throw Error(std::string("solve_linear_system: ") + e.what());
+    }
   }
   LinearSolveResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd&) const override {
-    return {solver.solve(b), 0, 0.0};
+    return {factor.solve(b), 0, 0.0};
   }
 };
 

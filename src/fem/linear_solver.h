@@ -14,7 +14,8 @@ namespace homesh {
 
 struct LinearSolverOptions {
   /// "cholmod": CHOLMOD's supernodal Cholesky (direct; the default);
-  /// "ldlt": Eigen's SimplicialLDLT with AMD ordering (direct);
+  /// "ldlt": Eigen's simplicial LDL^T with SuiteSparse's AMD ordering (fem/amd_ldlt.h;
+  ///         direct);
   /// "cg": preconditioned conjugate gradient, as in the thesis.
   std::string method = "cholmod";
   /// For "cg": a name of preconditioner_names() (fem/preconditioner.h).
