@@ -1,7 +1,6 @@
 #include "curving/patch_newton.h"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <utility>
 
 #include "curving/optimisation_patches.h"
+#include "fem/amd_ldlt.h"
 
 namespace homesh {
 namespace {
@@ -43,7 +43,32 @@ class PatchNewton {
           slots_[le].push_back({k, static_cast<int>(it - free_.begin())});
       }
     }
+    // The Hessian's lower pattern: the dofs of two free slots of one element couple.
+    const int n = dofs();
+    std::vector<std::vector<int>> rows(n);
+    for (const std::vector<Slot>& slots : slots_)
+      for (const Slot& a : slots)
+        for (const Slot& b : slots)
+          for (int i = first_[b.free]; i < first_[b.free + 1]; ++i)
+            for (int j = first_[a.free]; j < first_[a.free + 1]; ++j)
+              if (i >= j) rows[j].push_back(i);
+    std::vector<int> outer(n + 1, 0), inner;
+    for (int j = 0; j < n; ++j) {
+      std::sort(rows[j].begin(), rows[j].end());
+      rows[j].erase(std::unique(rows[j].begin(), rows[j].end()), rows[j].end());
+      inner.insert(inner.end(), rows[j].begin(), rows[j].end());
+      outer[j + 1] = static_cast<int>(inner.size());
+    }
+    H_.resize(n, n);
+    H_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+    std::copy(outer.begin(), outer.end(), H_.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), H_.innerIndexPtr());
+    std::fill_n(H_.valuePtr(), inner.size(), 0.0);
   }
+
+  // The lower triangle of the Hessian (its pattern fixed; each column starts at its
+  // diagonal), filled by assemble().
+  const Eigen::SparseMatrix<double>& hessian() const { return H_; }
 
   int dofs() const { return first_.back(); }
 
@@ -58,14 +83,23 @@ class PatchNewton {
     return E;
   }
 
-  // Gradient g and Hessian H (by the dofs) of energy() at the current nodes.
-  void assemble(Eigen::VectorXd& g, Eigen::SparseMatrix<double>& H) {
+  // Gradient g and Hessian (hessian(), by the dofs) of energy() at the current nodes.
+  void assemble(Eigen::VectorXd& g) {
     const int nf = static_cast<int>(free_.size());
     std::vector<Eigen::Vector2d> tangent(nf);
     for (int i = 0; i < nf; ++i)
       if (sliding(i)) s_.point(free_[i], s_.u[free_[i]], &tangent[i]);
     g.setZero(dofs());
-    std::vector<Eigen::Triplet<double>> entries;
+    std::fill_n(H_.valuePtr(), H_.nonZeros(), 0.0);
+    const int* outer = H_.outerIndexPtr();
+    const int* inner = H_.innerIndexPtr();
+    double* value = H_.valuePtr();
+    // Entry (row, col) of the lower triangle (the upper one's are its mirror: skipped).
+    auto add = [&](int row, int col, double v) {
+      if (row < col) return;
+      const int* p = std::lower_bound(inner + outer[col], inner + outer[col + 1], row);
+      value[p - inner] += v;
+    };
     Eigen::Matrix2Xd G;
     Eigen::MatrixXd Hx, Hl;
     for (std::size_t le = 0; le < elements_.size(); ++le) {
@@ -98,24 +132,22 @@ class PatchNewton {
           const int fb = slots[b].free, db = first_[fb];
           const Eigen::Matrix2d h = Hl.block<2, 2>(2 * b, 2 * a);  // rows b, columns a
           if (sliding(fa) && sliding(fb)) {
-            entries.emplace_back(db, da, tangent[fb].dot(h * tangent[fa]));
+            add(db, da, tangent[fb].dot(h * tangent[fa]));
           } else if (sliding(fa)) {
             const Eigen::Vector2d c = h * tangent[fa];
-            entries.emplace_back(db, da, c(0));
-            entries.emplace_back(db + 1, da, c(1));
+            add(db, da, c(0));
+            add(db + 1, da, c(1));
           } else if (sliding(fb)) {
             const Eigen::RowVector2d c = tangent[fb].transpose() * h;
-            entries.emplace_back(db, da, c(0));
-            entries.emplace_back(db, da + 1, c(1));
+            add(db, da, c(0));
+            add(db, da + 1, c(1));
           } else {
             for (int i = 0; i < 2; ++i)
-              for (int j = 0; j < 2; ++j) entries.emplace_back(db + i, da + j, h(i, j));
+              for (int j = 0; j < 2; ++j) add(db + i, da + j, h(i, j));
           }
         }
       }
     }
-    H.resize(dofs(), dofs());
-    H.setFromTriplets(entries.begin(), entries.end());
   }
 
   // Every element with a free node certified valid with minJ/maxJ >= floor.
@@ -186,6 +218,7 @@ class PatchNewton {
   std::vector<std::vector<Slot>> slots_;
   Eigen::Matrix2Xd X_, x0_;
   std::vector<double> u0_;
+  Eigen::SparseMatrix<double> H_;
 };
 
 }  // namespace
@@ -204,28 +237,25 @@ PatchNewtonResult patch_newton(const PatchProblem& problem, Eigen::Matrix2Xd& x,
   if (!std::isfinite(E) || pn.dofs() == 0) return res;
   double lambda = 0;
   Eigen::VectorXd g, step;
-  Eigen::SparseMatrix<double> H;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
-  bool analysed = false;
+  const Eigen::SparseMatrix<double>& H = pn.hessian();
+  Eigen::SparseMatrix<double> A = H;  // H damped; the same pattern
+  const int* outer = H.outerIndexPtr();
+  AmdLdlt ldlt;
+  ldlt.analyze(H);
   while (res.iterations < max_iterations) {
-    pn.assemble(g, H);
-    Eigen::VectorXd d = H.diagonal().cwiseAbs();
+    pn.assemble(g);
+    Eigen::VectorXd d(H.rows());
+    for (Eigen::Index i = 0; i < d.size(); ++i) d(i) = std::abs(H.valuePtr()[outer[i]]);
     const double dmax = d.maxCoeff();
     if (!(dmax > 0)) break;
     d = d.cwiseMax(1e-12 * dmax);
-    if (!analysed) {
-      ldlt.analyzePattern(H);
-      analysed = true;
-    }
     pn.save();
     bool accepted = false, raised = false;
     double E_new = E, decrement = 0;
     for (int damping = 0; damping <= kMaxDampings && !accepted; ++damping) {
-      Eigen::SparseMatrix<double> A = H;
-      for (int i = 0; i < A.rows(); ++i) A.coeffRef(i, i) += lambda * d(i);
-      ldlt.factorize(A);
-      const bool definite = ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0;
-      if (definite) {
+      std::copy_n(H.valuePtr(), H.nonZeros(), A.valuePtr());
+      for (Eigen::Index i = 0; i < A.rows(); ++i) A.valuePtr()[outer[i]] += lambda * d(i);
+      if (ldlt.try_factorize(A)) {
         step = ldlt.solve(-g);
         const double slope = g.dot(step);
         decrement = -slope;

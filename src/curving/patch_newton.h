@@ -17,7 +17,8 @@
 // p = 3 worst minJ/maxJ plate_holes_quads 0.892 -> 0.912 in 4 s instead of 9,
 // star1_blq_1e-3_allquads 0.876 -> 0.909 in 12 s instead of 18; triangles'
 // are kept as they are), lambda a Levenberg-Marquardt
-// damping raised until the sparse LDL^T factorisation is positive definite and
+// damping raised until the sparse LDL^T factorisation (fem/amd_ldlt.h, the Hessian's
+// pattern fixed per patch and analysed once) is positive definite and
 // the step is accepted, lowered after each accepted step (Toulorge, Geuzaine,
 // Remacle & Lambrechts, JCP 254, 2013, Sec 3.4: Newton on the whole patch;
 // Gmsh's HighOrderOptimize). A step is backtracked (Armijo) until the energy

@@ -55,14 +55,18 @@ void AmdLdlt::analyze(const Eigen::SparseMatrix<double>& K) {
   ldlt_.analyzePattern(upper_);
 }
 
-void AmdLdlt::factorize(const Eigen::SparseMatrix<double>& K) {
+bool AmdLdlt::try_factorize(const Eigen::SparseMatrix<double>& K) {
   if (K.rows() != upper_.rows() || K.cols() != upper_.cols() || K.nonZeros() != lower_nnz_)
     throw Error("amd_ldlt: factorize on a pattern that was not analysed");
   const double* value = K.valuePtr();
   double* u_value = upper_.valuePtr();
   for (std::size_t k = 0; k < from_.size(); ++k) u_value[k] = value[from_[k]];
   ldlt_.factorize(upper_);
-  if (ldlt_.info() != Eigen::Success || (upper_.rows() > 0 && !(ldlt_.vectorD().minCoeff() > 0)))
+  return ldlt_.info() == Eigen::Success && (upper_.rows() == 0 || ldlt_.vectorD().minCoeff() > 0);
+}
+
+void AmdLdlt::factorize(const Eigen::SparseMatrix<double>& K) {
+  if (!try_factorize(K))
     throw Error("amd_ldlt: factorisation failed (matrix not positive definite)");
 }
 

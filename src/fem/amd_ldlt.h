@@ -30,6 +30,9 @@ class AmdLdlt {
   /// Throws homesh::Error if it has not, or if K is not positive definite (a
   /// non-positive pivot of D).
   void factorize(const Eigen::SparseMatrix<double>& K);
+  /// The same, false instead of the throw on a matrix that is not positive definite
+  /// (as a damped Newton step wants to know, to raise its damping).
+  bool try_factorize(const Eigen::SparseMatrix<double>& K);
   /// x solving K x = b with the last factorisation. Throws homesh::Error if b's size
   /// is not K's.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;

@@ -84,6 +84,8 @@ TEST_CASE("amd_ldlt reads the lower triangle only and rejects what it cannot fac
   AmdLdlt g;
   g.analyze(indefinite);
   CHECK_THROWS_AS(g.factorize(indefinite), Error);
+  CHECK_FALSE(g.try_factorize(indefinite));  // the same answer without the throw
+  CHECK(g.try_factorize(a.K));               // and the same pattern, definite
 }
 
 TEST_CASE("amd_ldlt's ordering keeps the factor sparse", "[fem][amd_ldlt]") {
