@@ -312,9 +312,8 @@ struct PatchOutcome {
   double energy_before = 0, energy_after = 0;
 };
 
-}  // namespace
-
-OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
+// One pass: patches of opt.layers rings round the poor elements (first_layers ignored).
+OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
                              const OptimiseOptions& opt, const CurveEvaluator* curves) {
   if (static_cast<int>(fixed.size()) != m.num_nodes())
     throw Error("optimise_mesh: fixed has " + std::to_string(fixed.size()) + " entries for " +
@@ -461,6 +460,32 @@ OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
   for (int e = 0; e < m.num_elements_2d(); ++e)
     res.poor_after += before.min_det(e) > 0 && ratio(e) < opt.threshold;
   return res;
+}
+
+}  // namespace
+
+OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
+                             const OptimiseOptions& opt, const CurveEvaluator* curves) {
+  if (opt.first_layers < 0) throw Error("optimise_mesh: bad options (first_layers >= 0)");
+  if (opt.first_layers == 0 || opt.first_layers >= opt.layers)
+    return optimise_pass(m, fixed, opt, curves);
+  OptimiseOptions small = opt;
+  small.layers = opt.first_layers;
+  OptimiseResult first = optimise_pass(m, fixed, small, curves);
+  if (first.poor_after == 0) return first;
+  OptimiseResult r = optimise_pass(first.mesh, fixed, opt, curves);
+  r.worst_before = first.worst_before;
+  r.poor_before = first.poor_before;
+  r.invalid = first.invalid;
+  r.patches += first.patches;
+  r.accepted += first.accepted;
+  r.sweeps += first.sweeps;
+  r.newton_steps += first.newton_steps;
+  r.moved_nodes += first.moved_nodes;
+  r.sliding_nodes += first.sliding_nodes;
+  r.energy_before += first.energy_before;
+  r.energy_after += first.energy_after;
+  return r;
 }
 
 }  // namespace homesh

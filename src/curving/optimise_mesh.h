@@ -60,6 +60,13 @@ struct OptimiseOptions {
   double threshold = 0.8;
   /// Rings of neighbours added around the poor elements to make the patches.
   int layers = 3;
+  /// 0 < first_layers < layers: the patches are first grown by first_layers rings only,
+  /// and the elements still below the threshold after that are optimised again with
+  /// patches of `layers` rings (Gmsh's HighOrderOptimize grows its patches likewise
+  /// where they fall short: Toulorge et al., JCP 254, 2013, Sec 4). Small patches are
+  /// cheap: the Newton systems of a p = 5 patch of 3 rings have 2-4k dofs, and their
+  /// factorisations are most of the optimiser's time. 0: `layers` at once.
+  int first_layers = 0;
   /// Most node-by-node sweeps per patch, after the Newton steps. 0: none (the Newton
   /// steps reach what 600 sweeps reach, at a tenth of the time: patch_newton.h).
   int max_sweeps = 0;

@@ -8,8 +8,8 @@
 
 namespace homesh {
 
-/// Adds threshold, sweeps, newton, newton_tol, lattice and slide to `table`, read into the
-/// OptimiseOptions that `optimiser` gives (a pointer to a data member of T or a callable T& ->
+/// Adds threshold, sweeps, newton, newton_tol, lattice, patch_first and slide to `table`, read into
+/// the OptimiseOptions that `optimiser` gives (a pointer to a data member of T or a callable T& ->
 /// OptimiseOptions&).
 template <class T, class Optimiser>
 void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
@@ -30,6 +30,10 @@ void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
   table.add(
       "lattice", [o](T& t) -> double& { return o(t).lattice_weight; }, real(0, 1, "[)"),
       "share of the energy's weight on the order 2(p-1) lattice (corners and edges)");
+  table.add(
+      "patch_first", [o](T& t) -> int& { return o(t).first_layers; }, integer(0, 100),
+      "first optimise patches of this many rings only, then the elements still below the "
+      "threshold with patches of the full rings (0: the full rings at once)");
   table.add(
       "slide", [o](T& t) -> OptimiseOptions::Slide& { return o(t).slide; },
       choice<OptimiseOptions::Slide>({{"all", OptimiseOptions::Slide::all},

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "../layers/layer_test_meshes.h"
+#include "core/error.h"
 #include "core/raise_order.h"
 #include "curved_ring.h"
 #include "curving/deform_mesh.h"
@@ -195,4 +196,38 @@ TEST_CASE("optimise: boundary nodes slide along their curve and stay on it", "[c
     CHECK(off < 1e-10);
     CHECK(angle < 1e-10);
   }
+}
+
+TEST_CASE("optimise: first_layers is a pass of small patches, then full ones where still poor",
+          "[curving]") {
+  const Mesh lin = test::ring_mesh(test::circle(12, 1.0), test::circle(12, 1.5), 10, 4);
+  const Mesh curved = test::curved_ring(lin, 3);
+  const std::vector<bool> fixed = boundary_nodes(curved);
+  OptimiseOptions small, full, grown;
+  small.threshold = full.threshold = grown.threshold = 0.99;  // one ring cannot reach it
+  small.layers = 1;
+  full.layers = 3;
+  grown.layers = 3;
+  grown.first_layers = 1;
+  const OptimiseResult a = optimise_mesh(curved, fixed, small);
+  REQUIRE(a.poor_after > 0);
+  const OptimiseResult b = optimise_mesh(a.mesh, fixed, full);
+  const OptimiseResult r = optimise_mesh(curved, fixed, grown);
+  // The two passes, as two calls: the same nodes, the counts summed, the start's numbers.
+  CHECK((r.mesh.x - b.mesh.x).cwiseAbs().maxCoeff() == 0.0);
+  CHECK(r.worst_after == b.worst_after);
+  CHECK(r.worst_before == a.worst_before);
+  CHECK(r.poor_before == a.poor_before);
+  CHECK(r.patches == a.patches + b.patches);
+  CHECK(r.newton_steps == a.newton_steps + b.newton_steps);
+  CHECK(r.worst_after >= a.worst_after);
+  // Where one ring reaches the threshold, it is the result.
+  small.threshold = grown.threshold = 0.9;
+  const OptimiseResult c = optimise_mesh(curved, fixed, small);
+  REQUIRE(c.poor_after == 0);
+  const OptimiseResult d = optimise_mesh(curved, fixed, grown);
+  CHECK((d.mesh.x - c.mesh.x).cwiseAbs().maxCoeff() == 0.0);
+  CHECK(d.patches == c.patches);
+  grown.first_layers = -1;
+  CHECK_THROWS_AS(optimise_mesh(curved, fixed, grown), Error);
 }
