@@ -9,6 +9,7 @@
 
 #include "curving/optimisation_patches.h"
 #include "fem/amd_ldlt.h"
+#include "fem/sparse_pattern.h"
 
 namespace homesh {
 namespace {
@@ -52,18 +53,15 @@ class PatchNewton {
           for (int i = first_[b.free]; i < first_[b.free + 1]; ++i)
             for (int j = first_[a.free]; j < first_[a.free + 1]; ++j)
               if (i >= j) rows[j].push_back(i);
-    std::vector<int> outer(n + 1, 0), inner;
+    SparsePattern pattern;
+    pattern.outer.assign(n + 1, 0);
     for (int j = 0; j < n; ++j) {
       std::sort(rows[j].begin(), rows[j].end());
       rows[j].erase(std::unique(rows[j].begin(), rows[j].end()), rows[j].end());
-      inner.insert(inner.end(), rows[j].begin(), rows[j].end());
-      outer[j + 1] = static_cast<int>(inner.size());
+      pattern.inner.insert(pattern.inner.end(), rows[j].begin(), rows[j].end());
+      pattern.outer[j + 1] = static_cast<int>(pattern.inner.size());
     }
-    H_.resize(n, n);
-    H_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-    std::copy(outer.begin(), outer.end(), H_.outerIndexPtr());
-    std::copy(inner.begin(), inner.end(), H_.innerIndexPtr());
-    std::fill_n(H_.valuePtr(), inner.size(), 0.0);
+    pattern.assign_zero(H_);
   }
 
   // The lower triangle of the Hessian (its pattern fixed; each column starts at its

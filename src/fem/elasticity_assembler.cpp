@@ -90,9 +90,8 @@ std::vector<std::vector<int>> node_neighbours(const ElementNodes& en, const Inci
 
 // Dof 2 node + component. Lower: every diagonal, and (r, c), r > c, for free
 // dofs r, c of nodes sharing an element. Coupling: (r, c), r free, c fixed.
-template <typename Pattern>
 void dof_patterns(const std::vector<std::vector<int>>& neighbours, const std::vector<char>& fixed,
-                  Pattern& lower, Pattern& coupling) {
+                  SparsePattern& lower, SparsePattern& coupling) {
   const int num_dofs = int(fixed.size());
   std::vector<int> outer(num_dofs + 1, 0), inner, c_outer(num_dofs + 1, 0), c_inner;
   for (int i = 0; i < num_dofs / 2; ++i) {
@@ -196,41 +195,14 @@ ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& 
   dof_patterns(node_neighbours(en, inc), fixed_, pattern_, coupling_pattern_);
 }
 
-namespace {
-
-// Whether K has exactly the pattern (outer, inner), compressed.
-bool same_pattern(const Eigen::SparseMatrix<double>& K, const std::vector<int>& outer,
-                  const std::vector<int>& inner) {
-  const Eigen::Index n = Eigen::Index(outer.size()) - 1;
-  return K.rows() == n && K.cols() == n && K.isCompressed() &&
-         K.nonZeros() == Eigen::Index(inner.size()) &&
-         std::equal(outer.begin(), outer.end(), K.outerIndexPtr()) &&
-         std::equal(inner.begin(), inner.end(), K.innerIndexPtr());
-}
-
-// K with the pattern (outer, inner) and every value zero; its storage reused if it has it.
-void reset(Eigen::SparseMatrix<double>& K, const std::vector<int>& outer,
-           const std::vector<int>& inner) {
-  if (!same_pattern(K, outer, inner)) {
-    const Eigen::Index n = Eigen::Index(outer.size()) - 1;
-    K.resize(n, n);
-    K.resizeNonZeros(Eigen::Index(inner.size()));
-    std::copy(outer.begin(), outer.end(), K.outerIndexPtr());
-    std::copy(inner.begin(), inner.end(), K.innerIndexPtr());
-  }
-  std::fill_n(K.valuePtr(), K.nonZeros(), 0.0);
-}
-
-}  // namespace
-
 void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCoefficients& c,
                                    EliminatedSystem& sys) const {
   const int num_dofs = this->num_dofs();
   if (x.cols() * 2 != num_dofs)
     throw Error("assemble_elasticity: " + std::to_string(x.cols()) + " positions for " +
                 std::to_string(num_dofs / 2) + " nodes");
-  reset(sys.K, pattern_.outer, pattern_.inner);
-  reset(sys.coupling, coupling_pattern_.outer, coupling_pattern_.inner);
+  pattern_.assign_zero(sys.K);
+  coupling_pattern_.assign_zero(sys.coupling);
   sys.load = Eigen::VectorXd::Zero(num_dofs);
   const int *outer = sys.K.outerIndexPtr(), *inner = sys.K.innerIndexPtr();
   const int *c_outer = sys.coupling.outerIndexPtr(), *c_inner = sys.coupling.innerIndexPtr();

@@ -13,6 +13,7 @@
 #include "fem/assemble_elasticity.h"
 #include "fem/elasticity_coefficients.h"
 #include "fem/element_tabulation.h"
+#include "fem/sparse_pattern.h"
 
 namespace homesh {
 
@@ -70,14 +71,8 @@ class ElasticityAssembler {
   std::vector<char> fixed_;  // per dof
   std::vector<char> used_;   // per node: in some triangle or quadrilateral
   std::vector<std::vector<int>> colours_;
-  // A compressed column pattern without values (an Eigen matrix would allocate and
-  // zero them, and copying it into the system touch them again: on a p = 5 system of
-  // 2.7M entries that was a third of the setup).
-  struct Pattern {
-    std::vector<int> outer, inner;
-  };
   // Lower free-free plus diagonal; free-fixed.
-  Pattern pattern_, coupling_pattern_;
+  SparsePattern pattern_, coupling_pattern_;
 };
 
 }  // namespace homesh

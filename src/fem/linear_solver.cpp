@@ -10,6 +10,7 @@
 #include "fem/cholmod_solver.h"
 #include "fem/conjugate_gradient.h"
 #include "fem/preconditioner.h"
+#include "fem/sparse_pattern.h"
 
 namespace homesh {
 namespace {
@@ -109,8 +110,7 @@ const std::vector<std::string>& linear_solver_names() {
 struct LinearSolver::State {
   std::unique_ptr<Backend> backend;
   const Matrix* K = nullptr;
-  // The pattern of the last analysis (outer starts, inner indices).
-  std::vector<int> outer, inner;
+  SparsePattern analysed;  // the pattern of the last analysis
   int analyses = 0;
 };
 
@@ -135,16 +135,11 @@ void LinearSolver::factorize(const Matrix& K) {
                 std::to_string(K.cols()));
   if (!K.isCompressed()) throw Error("solve_linear_system: K must be in compressed storage");
   State& s = *state_;
-  const int* outer = K.outerIndexPtr();
-  const int* inner = K.innerIndexPtr();
-  const bool same = s.analyses > 0 && s.outer.size() == static_cast<size_t>(K.cols() + 1) &&
-                    std::equal(s.outer.begin(), s.outer.end(), outer) &&
-                    std::equal(s.inner.begin(), s.inner.end(), inner);
+  const bool same = s.analyses > 0 && s.analysed.matches(K);
   s.K = nullptr;
   if (!same) {
     s.backend->analyze(K);
-    s.outer.assign(outer, outer + K.cols() + 1);
-    s.inner.assign(inner, inner + K.nonZeros());
+    s.analysed = SparsePattern::of(K);
     ++s.analyses;
   }
   s.backend->factorize(K);
