@@ -19,6 +19,7 @@
 #include "voronoi/dual/window_regrowth.h"
 #include "voronoi/grid/loop_distance.h"
 #include "voronoi/seeding/boundary_encroachment.h"
+#include "voronoi/seeding/exact_lloyd.h"
 
 namespace homesh {
 namespace {
@@ -255,7 +256,17 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   }
   const CartesianGrid growth_grid = CartesianGrid::covering(loops.lo, loops.hi, n_growth, 3);
   Progress phase("phase", 3);
-  if (auto_seeds && o.lloyd.iterations > 0) {
+  const bool exact =
+      auto_seeds && o.lloyd.iterations > 0 &&
+      (o.lloyd.cells == "exact" ||
+       (o.lloyd.cells == "auto" && largest_anisotropy(metric, p.seeds) <= kIsotropic));
+  rep.exact_lloyd = exact;
+  if (exact) {
+    phase.update(0, "Lloyd's iteration on the seeds' exact cells");
+    p.seeds = exact_lloyd(
+        p.seeds, static_cast<int>(hold), metric,
+        [&p](const Eigen::Vector2d& x) { return bilinear_at(p.grid, p.domain, x); }, o.lloyd);
+  } else if (auto_seeds && o.lloyd.iterations > 0) {
     phase.update(0, "Lloyd's iteration on the seeds");
     // On a grid kLloydCoarsening times coarser: a centroid needs far fewer
     // cells per region than a dual triangle does. Seeds finer than that grid
@@ -370,6 +381,8 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
 // Thesis Ch 2 (Sections 2.3-2.5) on every surface, the boundary seeds shared.
 Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
                   const VoronoiMeshOptions& o, VoronoiReport* report) {
+  if (o.lloyd.cells != "auto" && o.lloyd.cells != "exact" && o.lloyd.cells != "grown")
+    throw Error("voronoi: Lloyd's cells '" + o.lloyd.cells + "' are none of auto, exact, grown");
   VoronoiReport local;
   VoronoiReport& rep = report ? *report : local;
   rep = {};
@@ -478,6 +491,8 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
     for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
     rep.smoothing_moves = smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
     if (o.cleanup) rep.flips += flip_edges(m, metric_mean_ratio);
+    if (o.raise_worst > 0)
+      rep.raise_steps = raise_worst_triangle(m.x, m.tri, free_node, metric, o.raise_worst);
   } else if (o.cleanup) {
     rep.flips = flip_edges(m, metric_mean_ratio);
   }

@@ -54,9 +54,10 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
         "seeds ({}, {:.2f} s), engine {} {:.2f} s",
         s.tag, s.grid.nx, s.grid.ny, s.grid.ds(), s.boundary_seeds, s.front_seeds, s.interior_seeds,
         o.seeds != "auto" ? o.seeds
-                          : fmt::format("Poisson-disc in the metric, {} Lloyd iterations, {} "
-                                        "encroaching on a boundary segment dropped",
-                                        o.mesher.lloyd.iterations, s.encroaching_dropped),
+                          : fmt::format("Poisson-disc in the metric, {} Lloyd iterations on {} "
+                                        "cells, {} encroaching on a boundary segment dropped",
+                                        o.mesher.lloyd.iterations,
+                                        s.exact_lloyd ? "exact" : "grown", s.encroaching_dropped),
         s.seeding_seconds, o.mesher.engine, s.growth_seconds);
     log.info(
         "voronoi: surface {}: dual {} triangles, check {} after {} refinement rounds (+{} "
@@ -83,8 +84,10 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
     log.info("voronoi: clean-up: {} interior nodes of three triangles removed, {} edges flipped",
              rep.valence_three, rep.flips);
   if (o.mesher.smooth > 0)
-    log.info("voronoi: {} smoothing sweeps of the interior nodes, {} moves", o.mesher.smooth,
-             rep.smoothing_moves);
+    log.info(
+        "voronoi: {} smoothing sweeps of the interior nodes, {} moves; {} steps raising the "
+        "worst triangle",
+        o.mesher.smooth, rep.smoothing_moves, rep.raise_steps);
   if (rep.dropped_seeds > 0)
     log.info("voronoi: {} interior seeds outside the boundary polygon left out", rep.dropped_seeds);
 }
@@ -184,12 +187,23 @@ Stage voronoi_stage() {
       "Lloyd iterations on the auto seeds: each interior seed but the first front row "
       "moves to the metric centroid of its region (0: none)");
   t.add(
+      "lloyd_cells", [](O& o) -> std::string& { return o.mesher.lloyd.cells; },
+      one_of({"auto", "exact", "grown"}),
+      "the regions Lloyd's centroids are taken of | exact: the seeds' Euclidean Voronoi cells "
+      "(CGAL), weighted by sqrt(det M) M, no grid | grown: the crystals grown on the grid | "
+      "auto: exact where the metric is isotropic at every seed, else grown");
+  t.add(
       "smooth", [](O& o) -> int& { return o.mesher.smooth; }, integer(0, 100),
       "sweeps of smart smoothing of the interior nodes after the dual (Laplacian or "
       "ideal-apex position, then compass searches: on the worst triangle where it stays "
       "below 0.8, on the sum of inverse mean ratios; a move is kept only if the worst "
       "triangle round the node gets no worse in the metric; the connectivity stays the "
       "dual's; 0: none)");
+  t.add(
+      "raise", [](O& o) -> int& { return o.mesher.raise_worst; }, integer(0, 100000),
+      "after the smoothing and the flips, at most N steps on the mesh's worst triangle: each "
+      "of its interior corners moves (compass search) to make the worst triangle round it "
+      "the best, until the worst has no corner that can raise it (0: none)");
   t.add(
       "cleanup", [](O& o) -> bool& { return o.mesher.cleanup; }, boolean(),
       "topological clean-up of the dual: interior nodes of only three triangles removed (their "

@@ -14,6 +14,49 @@ constexpr double kPoor = 0.8;              // below this worst quality, the comp
 constexpr int kSearchSteps = 24;           // compass search: at most this many steps
 constexpr double kSearchTolerance = 1e-3;  // and until the step is this fraction of the first
 
+// The triangles round each node, as the other two corners counter-clockwise.
+using Star = std::vector<std::array<int, 2>>;
+std::vector<Star> stars(Eigen::Index n, const Eigen::MatrixXi& tri) {
+  std::vector<Star> star(static_cast<std::size_t>(n));
+  for (Eigen::Index t = 0; t < tri.cols(); ++t)
+    for (int k = 0; k < 3; ++k)
+      star[tri(k, t)].push_back({tri((k + 1) % 3, t), tri((k + 2) % 3, t)});
+  return star;
+}
+
+// Worst quality of a node's triangles with the node at p, and the sum of
+// their inverse qualities (infinite once one folds or degenerates).
+struct Patch {
+  double worst, inverse;
+};
+Patch patch(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Vector2d& p,
+            const Eigen::Matrix2d& M);
+
+// Compass search from `to`: the 8 steps of length h round the best point so
+// far, h halved on failure, until h is kSearchTolerance of the first or
+// kSearchSteps halvings.
+template <class Better>
+void compass(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Matrix2d& M, double h,
+             Eigen::Vector2d& to, Patch& best, Better better) {
+  const double stop = h * kSearchTolerance;
+  for (int k = 0; k < kSearchSteps && h > stop; ++k) {
+    bool moved = false;
+    for (int d = 0; d < 8; ++d) {
+      const Eigen::Vector2d c =
+          to + h * Eigen::Vector2d(std::cos(M_PI * d / 4), std::sin(M_PI * d / 4));
+      const Patch q = patch(x, s, c, M);
+      if (better(q, best)) {
+        best = q;
+        to = c;
+        moved = true;
+      }
+    }
+    if (!moved) h *= 0.5;
+  }
+}
+
+bool raises_worst(const Patch& q, const Patch& b) { return q.worst > b.worst + 1e-12; }
+
 }  // namespace
 
 double metric_mean_ratio(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
@@ -24,49 +67,25 @@ double metric_mean_ratio(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
   return edges > 0.0 ? 4.0 * std::sqrt(3.0) * area * std::sqrt(M.determinant()) / edges : 0.0;
 }
 
+namespace {
+
+Patch patch(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Vector2d& p,
+            const Eigen::Matrix2d& M) {
+  Patch out{std::numeric_limits<double>::infinity(), 0.0};
+  for (const auto& [a, b] : s) {
+    const double q = metric_mean_ratio(p, x.col(a), x.col(b), M);
+    out.worst = std::min(out.worst, q);
+    out.inverse += q > 0.0 ? 1.0 / q : std::numeric_limits<double>::infinity();
+  }
+  return out;
+}
+
+}  // namespace
+
 int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
                       const std::vector<char>& free_node, const MetricField& metric, int sweeps) {
   const Eigen::Index n = x.cols();
-  // The triangles round each node, as the other two corners counter-clockwise.
-  std::vector<std::vector<std::array<int, 2>>> star(static_cast<std::size_t>(n));
-  for (Eigen::Index t = 0; t < tri.cols(); ++t)
-    for (int k = 0; k < 3; ++k)
-      star[tri(k, t)].push_back({tri((k + 1) % 3, t), tri((k + 2) % 3, t)});
-  // Worst quality of v's triangles with v at p, and the sum of their
-  // inverse qualities (infinite once one folds or degenerates).
-  struct Patch {
-    double worst, inverse;
-  };
-  const auto patch = [&](const std::vector<std::array<int, 2>>& s, const Eigen::Vector2d& p,
-                         const Eigen::Matrix2d& M) {
-    Patch out{std::numeric_limits<double>::infinity(), 0.0};
-    for (const auto& [a, b] : s) {
-      const double q = metric_mean_ratio(p, x.col(a), x.col(b), M);
-      out.worst = std::min(out.worst, q);
-      out.inverse += q > 0.0 ? 1.0 / q : std::numeric_limits<double>::infinity();
-    }
-    return out;
-  };
-  // Compass search from `to`: the 8 steps of length h round the best point so
-  // far, h halved on failure, until h is `stop` or kSearchSteps halvings.
-  const auto compass = [&](const std::vector<std::array<int, 2>>& s, const Eigen::Matrix2d& M,
-                           double h, Eigen::Vector2d& to, Patch& best, auto better) {
-    const double stop = h * kSearchTolerance;
-    for (int k = 0; k < kSearchSteps && h > stop; ++k) {
-      bool moved = false;
-      for (int d = 0; d < 8; ++d) {
-        const Eigen::Vector2d c =
-            to + h * Eigen::Vector2d(std::cos(M_PI * d / 4), std::sin(M_PI * d / 4));
-        const Patch q = patch(s, c, M);
-        if (better(q, best)) {
-          best = q;
-          to = c;
-          moved = true;
-        }
-      }
-      if (!moved) h *= 0.5;
-    }
-  };
+  const std::vector<Star> star = stars(n, tri);
   int moves = 0;
   for (int sweep = 0; sweep < sweeps; ++sweep)
     for (Eigen::Index v = 0; v < n; ++v) {
@@ -87,7 +106,7 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       }
       laplace /= static_cast<double>(s.size());
       apex /= static_cast<double>(s.size());
-      Patch best = patch(s, p, M);
+      Patch best = patch(x, s, p, M);
       // No worse worst triangle, and a smaller sum of inverse qualities.
       const auto smaller_sum = [](double floor) {
         return [floor](const Patch& q, const Patch& b) {
@@ -96,7 +115,7 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       };
       Eigen::Vector2d to = p;
       for (const Eigen::Vector2d& c : {laplace, apex}) {
-        const Patch q = patch(s, c, M);
+        const Patch q = patch(x, s, c, M);
         if (smaller_sum(best.worst)(q, best)) {
           best = q;
           to = c;
@@ -104,19 +123,57 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       }
       const double h = 0.25 * std::sqrt((x.col(s.front()[0]) - p).squaredNorm());
       // Where the worst triangle stays poor, raise it first.
-      if (best.worst < kPoor)
-        compass(s, M, h, to, best,
-                [](const Patch& q, const Patch& b) { return q.worst > b.worst + 1e-12; });
+      if (best.worst < kPoor) compass(x, s, M, h, to, best, raises_worst);
       // Then the sum of inverse qualities (Knupp's inverse mean ratio), the
       // worst triangle kept no worse: the star's optimum, where the fixed
       // candidates above only come near it.
-      compass(s, M, h, to, best, smaller_sum(best.worst));
+      compass(x, s, M, h, to, best, smaller_sum(best.worst));
       if (to != p) {
         x.col(v) = to;
         ++moves;
       }
     }
   return moves;
+}
+
+}  // namespace homesh
+
+namespace homesh {
+
+int raise_worst_triangle(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
+                         const std::vector<char>& free_node, const MetricField& metric,
+                         int max_steps) {
+  const std::vector<Star> star = stars(x.cols(), tri);
+  const auto quality = [&](Eigen::Index t) {
+    const Eigen::Vector2d a = x.col(tri(0, t)), b = x.col(tri(1, t)), c = x.col(tri(2, t));
+    return metric_mean_ratio(a, b, c, metric.metric_at((a + b + c) / 3));
+  };
+  int steps = 0;
+  for (; steps < max_steps; ++steps) {
+    Eigen::Index worst = 0;
+    double q_worst = std::numeric_limits<double>::infinity();
+    for (Eigen::Index t = 0; t < tri.cols(); ++t)
+      if (const double q = quality(t); q < q_worst) {
+        q_worst = q;
+        worst = t;
+      }
+    bool moved = false;
+    for (int k = 0; k < 3; ++k) {
+      const int v = tri(k, worst);
+      if (!free_node[v]) continue;
+      const Eigen::Vector2d p = x.col(v);
+      const Eigen::Matrix2d M = metric.metric_at(p);
+      Patch best = patch(x, star[v], p, M);
+      Eigen::Vector2d to = p;
+      compass(x, star[v], M, 0.25 * (x.col(star[v].front()[0]) - p).norm(), to, best, raises_worst);
+      if (to != p) {
+        x.col(v) = to;
+        moved = true;
+      }
+    }
+    if (!moved) break;
+  }
+  return steps;
 }
 
 }  // namespace homesh

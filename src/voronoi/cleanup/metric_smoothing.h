@@ -44,4 +44,15 @@ double metric_mean_ratio(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
 int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
                       const std::vector<char>& free_node, const MetricField& metric, int sweeps);
 
+/// The mesh's worst triangle (mean ratio in the metric at its centroid),
+/// again and again: each of its free corners moves by the compass search
+/// above to the position that makes the worst triangle of its star the
+/// best, until the worst triangle has no free corner that can raise it or
+/// max_steps. Raises the mesh's minimum where the sweeps above, which trade
+/// it for the sum of inverse qualities once it is above 0.8, leave it;
+/// only the few nodes of the worst triangles move. Returns the steps taken.
+int raise_worst_triangle(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
+                         const std::vector<char>& free_node, const MetricField& metric,
+                         int max_steps);
+
 }  // namespace homesh

@@ -33,6 +33,37 @@ std::vector<std::array<int, 3>> cgal_delaunay_triangles(const Eigen::Matrix2Xd& 
   return out;
 }
 
+VoronoiCells cgal_voronoi_cells(const Eigen::Matrix2Xd& points) {
+  std::vector<std::pair<Kernel::Point_2, int>> input;
+  input.reserve(points.cols());
+  for (int k = 0; k < points.cols(); ++k)
+    input.emplace_back(Kernel::Point_2(points(0, k), points(1, k)), k);
+  const Delaunay dt(input.begin(), input.end());
+  VoronoiCells out;
+  out.vertices.resize(points.cols());
+  out.neighbours.resize(points.cols());
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    const int k = v->info();
+    auto f = dt.incident_faces(v), end = f;
+    bool bounded = true;
+    std::vector<Eigen::Vector2d> cell;
+    do {
+      if (dt.is_infinite(f)) {
+        bounded = false;
+      } else {
+        const Kernel::Point_2 c = dt.circumcenter(f);
+        cell.emplace_back(c.x(), c.y());
+      }
+    } while (++f != end);
+    if (bounded) out.vertices[k] = std::move(cell);
+    auto n = dt.incident_vertices(v), stop = n;
+    do
+      if (!dt.is_infinite(n)) out.neighbours[k].push_back(n->info());
+    while (++n != stop);
+  }
+  return out;
+}
+
 int cgal_orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
   return static_cast<int>(CGAL::orientation(
       Kernel::Point_2(a.x(), a.y()), Kernel::Point_2(b.x(), b.y()), Kernel::Point_2(c.x(), c.y())));

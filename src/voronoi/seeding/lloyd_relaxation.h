@@ -36,7 +36,19 @@ struct LloydOptions {
   /// A seed moves only if its centroid is this many cells (ds) inside the
   /// domain and from every other seed; otherwise it stays.
   double clearance_cells = 2.0;
+  /// The regions the centroids are taken of: "grown" (the crystals on the
+  /// grid, as below), "exact" (the seeds' Euclidean Voronoi cells,
+  /// exact_lloyd.h, weighted by the metric), or "auto": exact where the
+  /// metric is isotropic at every seed (its semi-axes within kIsotropic),
+  /// grown where it is not.
+  std::string cells = "auto";
+  /// With exact cells: a centroid is taken only this many sizes inside the
+  /// domain and from every neighbour.
+  double exact_clearance = 0.25;
 };
+
+/// Semi-axes within this ratio: isotropic, for LloydOptions::cells = "auto".
+constexpr double kIsotropic = 1.01;
 
 /// Seeds 0..fixed-1 of `problem` (the boundary seeds) stay, and so does
 /// every seed s with held[s] != 0 (held empty or one flag per seed, e.g. the

@@ -117,3 +117,36 @@ TEST_CASE("metric smoothing: a node reaches its star's least sum of inverse mean
   CHECK(objective(h.x.col(0)) <= best * (1 + 1e-6));
   CHECK(worst(h.x, h.tri, I) >= before);
 }
+
+TEST_CASE("raise worst triangle: lifts the minimum the inverse-sum smoothing trades away",
+          "[voronoi]") {
+  // One ring node pulled out to 1.3: the sum of inverse mean ratios and the
+  // worst one have different optima for the centre.
+  Hexagon h;
+  h.x.col(1) << 1.3, 0.0;
+  const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+  const MetricField unit = MetricField::constant(I);
+  std::vector<char> free_node(7, 0);
+  free_node[0] = 1;
+  smooth_free_nodes(h.x, h.tri, free_node, unit, 3);
+  const double smoothed = worst(h.x, h.tri, I);
+  const Eigen::Vector2d centre = h.x.col(0);
+  const int steps = raise_worst_triangle(h.x, h.tri, free_node, unit, 100);
+  const double raised = worst(h.x, h.tri, I);
+  INFO(smoothed << " -> " << raised);
+  CHECK(steps >= 1);
+  CHECK(raised > smoothed + 1e-3);
+  CHECK(raised <= 1.0);
+  // The max-min point: moving the centre a little any way lowers the worst.
+  for (int d = 0; d < 8; ++d) {
+    Eigen::Matrix2Xd y = h.x;
+    y.col(0) += 1e-2 * Eigen::Vector2d(std::cos(M_PI * d / 4), std::sin(M_PI * d / 4));
+    CHECK(worst(y, h.tri, I) <= raised + 1e-6);
+  }
+  // No free node: nothing moves.
+  Hexagon fixed;
+  fixed.x.col(0) = centre + Eigen::Vector2d(0.2, 0.1);
+  const Eigen::Matrix2Xd before = fixed.x;
+  CHECK(raise_worst_triangle(fixed.x, fixed.tri, std::vector<char>(7, 0), unit, 100) == 0);
+  CHECK(fixed.x == before);
+}
