@@ -104,9 +104,14 @@ SurfaceLoops surface_loops(const SeededBoundary& b, const SurfaceBoundary& s) {
     int depth = 0;
     for (std::size_t o = 0; o < out.polygons.size(); ++o)
       depth += o != l && inside_loops({out.polygons[o]}, p.col(0));
+    // A flipped loop is also walked backwards, so that each segment starts
+    // where the one before it ended (the front rows follow these chains).
     const bool flip = (area > 0) == (depth % 2 == 1);
-    for (auto [a, c] : loop_segments[l])
-      out.segments.push_back(flip ? std::array<int, 2>{c, a} : std::array<int, 2>{a, c});
+    if (flip)
+      for (auto it = loop_segments[l].rbegin(); it != loop_segments[l].rend(); ++it)
+        out.segments.push_back({(*it)[1], (*it)[0]});
+    else
+      out.segments.insert(out.segments.end(), loop_segments[l].begin(), loop_segments[l].end());
   }
   out.lo = out.polygons.front().rowwise().minCoeff();
   out.hi = out.polygons.front().rowwise().maxCoeff();

@@ -208,3 +208,59 @@ TEST_CASE(
   CHECK(mean_a > mean_c - 0.005);
   CHECK(worst_a > 0.6);
 }
+
+TEST_CASE("voronoi_mesh: the front rows go round a hole as round the outer loop", "[voronoi]") {
+  // The unit square with a square hole [0.35, 0.65]^2 whose loop runs
+  // counter-clockwise as given (so the mesher turns it over), both seeded
+  // every 0.05 in M = 400 I. Two rows, no Lloyd, no smoothing: the second
+  // row stands sqrt 3 sizes off the walls, at the apexes of the first.
+  SeededBoundary b = unit_square(20);
+  const Eigen::Vector2d corner[4] = {{0.35, 0.35}, {0.65, 0.35}, {0.65, 0.65}, {0.35, 0.65}};
+  const Eigen::Index first = b.seeds.cols();
+  b.seeds.conservativeResize(2, first + 24);
+  for (int c = 0; c < 4; ++c) {
+    b.seeds.col(first + c) = corner[c];
+    b.classes.push_back({0, c + 5, std::numeric_limits<double>::quiet_NaN()});
+  }
+  Eigen::Index next = first + 4;
+  for (int c = 0; c < 4; ++c) {
+    const Eigen::Vector2d a = corner[c], z = corner[(c + 1) % 4];
+    std::vector<int> on{static_cast<int>(first + c)};
+    for (int k = 1; k < 6; ++k) {
+      b.seeds.col(next) = a + (z - a) * k / 6.0;
+      b.classes.push_back({1, c + 5, k / 6.0});
+      on.push_back(static_cast<int>(next++));
+    }
+    on.push_back(static_cast<int>(first + (c + 1) % 4));
+    b.curve_seeds[c + 5] = on;
+    Eigen::Matrix2Xd samples(2, 101);
+    for (int k = 0; k <= 100; ++k) samples.col(k) = a + (z - a) * k / 100.0;
+    b.curve_samples[c + 5] = samples;
+  }
+  b.surfaces[0].loops.push_back({{5, false}, {6, false}, {7, false}, {8, false}});
+  homesh::VoronoiMeshOptions o;
+  o.seeding.front_rows = 2;
+  o.lloyd.iterations = 0;
+  o.smooth = 0;
+  o.cleanup = false;
+  homesh::VoronoiReport rep;
+  const homesh::Mesh m =
+      homesh::voronoi_mesh(b, MetricField::constant(400 * Eigen::Matrix2d::Identity()), o, &rep);
+  CHECK(total_area(m) == Approx(1.0 - 0.09).epsilon(1e-12));
+  // Nodes sqrt(3) / 2 and sqrt 3 sizes (within 0.01 of a size) off the
+  // hole's sides, beside them: the first and second rows (24 and 20 apexes
+  // along the 24 segments, fewer at the corners). Before the hole's loop
+  // was walked in order when turned over, its chains were single segments
+  // and no second row grew (1 node there, from the Poisson-disc fill).
+  int row1 = 0, row2 = 0;
+  for (Eigen::Index k = first + 24; k < m.x.cols(); ++k) {
+    const Eigen::Vector2d p = m.x.col(k) - Eigen::Vector2d(0.5, 0.5);
+    const double d = p.cwiseAbs().maxCoeff() - 0.15;  // off the hole, along a side
+    if (p.cwiseAbs().minCoeff() > 0.14) continue;     // not beside a side
+    row1 += std::abs(d - 0.05 * std::sqrt(3.0) / 2) < 0.0005;
+    row2 += std::abs(d - 0.05 * std::sqrt(3.0)) < 0.0005;
+  }
+  INFO(row1 << " " << row2);
+  CHECK(row1 >= 16);
+  CHECK(row2 >= 15);
+}
