@@ -13,6 +13,7 @@
 #include "core/progress.h"
 #include "layers/edge_flips.h"
 #include "voronoi/cleanup/metric_smoothing.h"
+#include "voronoi/cleanup/valence_four.h"
 #include "voronoi/cleanup/valence_three.h"
 #include "voronoi/dual/conforming_dual.h"
 #include "voronoi/dual/refine_dual.h"
@@ -120,6 +121,30 @@ SurfaceLoops surface_loops(const SeededBoundary& b, const SurfaceBoundary& s) {
     out.hi = out.hi.cwiseMax(p.rowwise().maxCoeff());
   }
   return out;
+}
+
+// Drops nodes `gone` (ascending; in no triangle, line or point) from m,
+// renumbering the others in order.
+void drop_nodes(Mesh& m, const std::vector<int>& gone) {
+  std::vector<int> to(m.x.cols(), -1);
+  int count = 0;
+  for (int k = 0, g = 0; k < static_cast<int>(to.size()); ++k)
+    if (g < static_cast<int>(gone.size()) && gone[g] == k)
+      ++g;
+    else
+      to[k] = count++;
+  Eigen::Matrix2Xd x(2, count);
+  std::vector<NodeClass> node_class(count);
+  for (std::size_t k = 0; k < to.size(); ++k)
+    if (to[k] >= 0) {
+      x.col(to[k]) = m.x.col(static_cast<Eigen::Index>(k));
+      node_class[to[k]] = m.node_class[k];
+    }
+  m.x = std::move(x);
+  m.node_class = std::move(node_class);
+  for (Eigen::MatrixXi* elements : {&m.tri, &m.line})
+    for (Eigen::Index e = 0; e < elements->size(); ++e) (*elements)(e) = to[(*elements)(e)];
+  for (int& p : m.point_node) p = to[p];
 }
 
 // Lloyd's iteration on the seeds `free` of problem p (its metric and seeds)
@@ -495,7 +520,20 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
     std::vector<char> free_node(m.node_class.size());
     for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
     rep.smoothing_moves = smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
-    if (o.cleanup) rep.flips += flip_edges(m, metric_mean_ratio);
+    if (o.cleanup) {
+      rep.flips += flip_edges(m, metric_mean_ratio);
+      // Valence-4 nodes whose quad is better without them go, on the
+      // smoothed positions; the rest smoothed again round the new quads.
+      const std::vector<int> gone = remove_valence_four(m, free_node, metric_mean_ratio);
+      rep.valence_four = static_cast<int>(gone.size());
+      if (!gone.empty()) {
+        drop_nodes(m, gone);
+        free_node.assign(m.node_class.size(), 0);
+        for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
+        rep.smoothing_moves += smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
+        rep.flips += flip_edges(m, metric_mean_ratio);
+      }
+    }
     if (o.raise_worst > 0)
       rep.raise_steps = raise_worst_triangle(m.x, m.tri, free_node, metric, o.raise_worst);
   } else if (o.cleanup) {

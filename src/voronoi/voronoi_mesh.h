@@ -76,6 +76,7 @@ struct VoronoiReport {
   int dropped_seeds = 0;     ///< interior seeds cut off by a boundary chord
   int smoothing_moves = 0;
   int valence_three = 0;  ///< interior nodes of three triangles removed
+  int valence_four = 0;   ///< interior nodes of four triangles removed (valence_four.h)
   int flips = 0;          ///< edges flipped
   int raise_steps = 0;    ///< steps raising the worst triangle (raise_worst_triangle)
 };

@@ -81,8 +81,10 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
              s.from_dual + s.filled, s.from_dual, s.filled);
   }
   if (o.mesher.cleanup)
-    log.info("voronoi: clean-up: {} interior nodes of three triangles removed, {} edges flipped",
-             rep.valence_three, rep.flips);
+    log.info(
+        "voronoi: clean-up: {} interior nodes of three triangles removed, {} of four (where "
+        "their quad is better without them), {} edges flipped",
+        rep.valence_three, rep.valence_four, rep.flips);
   if (o.mesher.smooth > 0)
     log.info(
         "voronoi: {} smoothing sweeps of the interior nodes, {} moves; {} steps raising the "
@@ -208,7 +210,9 @@ Stage voronoi_stage() {
       "cleanup", [](O& o) -> bool& { return o.mesher.cleanup; }, boolean(),
       "topological clean-up of the dual: interior nodes of only three triangles removed (their "
       "triangles merged), edges flipped where the other diagonal raises the worst mean ratio "
-      "in the metric (Q11), after the smoothing | off: the dual's connectivity");
+      "in the metric (Q11), after the smoothing, and interior nodes of four triangles removed "
+      "where the better split of their quad raises the worst of the four | off: the dual's "
+      "connectivity");
   t.add(
       "engine", [](O& o) -> std::string& { return o.mesher.engine; }, one_of(engines),
       names_text(engines));
