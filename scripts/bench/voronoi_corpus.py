@@ -16,7 +16,8 @@ voronoi's filled triangles (made by the constrained fill, not by the dual) are r
 
 Usage:
   PYTHONPATH=build/python /usr/bin/python3 scripts/bench/voronoi_corpus.py
-      [--cases PATTERN] [--methods PATTERN] [--out out/bench/voronoi] [--timeout 300]
+      [--cases PATTERN] [--methods PATTERN] [--variant K=V:K=V ...] [--out out/bench/voronoi]
+      [--timeout 300]
 Writes OUT/voronoi_corpus.csv and OUT/voronoi_corpus.png, and prints a table per model:
 triangles, ICN min / mean, seconds, and voronoi's time over frontal's.
 """
@@ -51,6 +52,25 @@ def models():
     return out
 
 
+def options(method):
+    """homesh.voronoi's keyword options of a method name: 'voronoi', 'voronoi windows=off' or
+    a variant 'voronoi K=V:K=V' (numbers as numbers, on/off as booleans)."""
+    out = {}
+    for item in (method.split(" ", 1)[1].split(":") if " " in method else []):
+        key, value = item.split("=", 1)
+        if value in ("on", "off"):
+            out[key] = value == "on"
+        else:
+            try:
+                out[key] = int(value)
+            except ValueError:
+                try:
+                    out[key] = float(value)
+                except ValueError:
+                    out[key] = value
+    return out
+
+
 def child(conn, name, method):
     import gmsh
     row = dict(case=name, method=method, status="ok")
@@ -73,7 +93,7 @@ def child(conn, name, method):
         else:
             import homesh
             homesh.set_quiet(True)
-            r = homesh.voronoi(**({"windows": False} if "windows=off" in method else {}))
+            r = homesh.voronoi(**options(method))
             filled = r["results"]["filled_triangles"]
         row["seconds"] = time.perf_counter() - start
         q_min, q_mean, triangles, invalid = icn()
@@ -104,11 +124,15 @@ def main():
     parser.add_argument("--methods", default="*")
     parser.add_argument("--out", default=os.path.join(ROOT, "out", "bench", "voronoi"))
     parser.add_argument("--timeout", type=float, default=300)
+    parser.add_argument("--variant", action="append", default=[],
+                        help="also run voronoi with options K=V:K=V (repeatable), as the method "
+                             "'voronoi K=V:K=V'")
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     cases = [c for c in models()
              if any(fnmatch.fnmatch(c.name, p) for p in args.cases.split(","))]
     methods = [m for m in METHODS if any(fnmatch.fnmatch(m, p) for p in args.methods.split(","))]
+    methods += [f"voronoi {v}" for v in args.variant]
     rows = []
     for c in cases:
         for m in methods:

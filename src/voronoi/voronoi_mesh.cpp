@@ -287,16 +287,20 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   const CartesianGrid growth_grid = CartesianGrid::covering(loops.lo, loops.hi, n_growth, 3);
   Progress phase("phase", 3);
   const bool exact =
-      auto_seeds && o.lloyd.iterations > 0 &&
+      auto_seeds && o.lloyd.iterations != 0 &&
       (o.lloyd.cells == "exact" ||
        (o.lloyd.cells == "auto" && largest_anisotropy(metric, p.seeds) <= kIsotropic));
   rep.exact_lloyd = exact;
+  rep.lloyd_iterations = !auto_seeds                             ? 0
+                         : o.lloyd.iterations != kAutoIterations ? o.lloyd.iterations
+                         : exact                                 ? kExactIterations
+                                                                 : kGrownIterations;
   if (exact) {
     phase.update(0, "Lloyd's iteration on the seeds' exact cells");
     p.seeds = exact_lloyd(
         p.seeds, static_cast<int>(hold), metric,
         [&p](const Eigen::Vector2d& x) { return bilinear_at(p.grid, p.domain, x); }, o.lloyd);
-  } else if (auto_seeds && o.lloyd.iterations > 0) {
+  } else if (auto_seeds && o.lloyd.iterations != 0) {
     phase.update(0, "Lloyd's iteration on the seeds");
     // On a grid kLloydCoarsening times coarser: a centroid needs far fewer
     // cells per region than a dual triangle does. Seeds finer than that grid

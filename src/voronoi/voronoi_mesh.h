@@ -55,6 +55,7 @@ struct VoronoiSurfaceReport {
   long boundary_seeds = 0, front_seeds = 0, interior_seeds = 0;
   long encroaching_dropped = 0;  ///< automatic seeds in a boundary segment's diametral circle
   bool exact_lloyd = false;      ///< Lloyd's iteration on exact cells (exact_lloyd.h)
+  int lloyd_iterations = 0;      ///< its iterations (at most: exact cells stop once still)
   double seeding_seconds = 0, growth_seconds = 0;
   long dual_size = 0;         ///< triangles of the first dual
   bool dual_checked = false;  ///< the refined dual passed check_dual

@@ -189,7 +189,7 @@ def test_stages_list_every_option_with_its_default(session):
     assert stages["curve"]["increments"][0] == "1"
     assert stages["curve"]["reach"][0] == "2"
     assert stages["voronoi"]["front"][0] == "all"
-    assert stages["voronoi"]["lloyd"][0] == "10"
+    assert stages["voronoi"]["lloyd"][0] == "auto"
     assert stages["layers"]["walls"][0] == ""
     assert "physical group number" in stages["layers"]["walls"][1]
     assert "physical group number" in stages["rotate"]["wall"][1]

@@ -56,8 +56,8 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
         o.seeds != "auto" ? o.seeds
                           : fmt::format("Poisson-disc in the metric, {} Lloyd iterations on {} "
                                         "cells, {} encroaching on a boundary segment dropped",
-                                        o.mesher.lloyd.iterations,
-                                        s.exact_lloyd ? "exact" : "grown", s.encroaching_dropped),
+                                        s.lloyd_iterations, s.exact_lloyd ? "exact" : "grown",
+                                        s.encroaching_dropped),
         s.seeding_seconds, o.mesher.engine, s.growth_seconds);
     log.info(
         "voronoi: surface {}: dual {} triangles, check {} after {} refinement rounds (+{} "
@@ -185,8 +185,10 @@ Stage voronoi_stage() {
       "the fronts meet, Lloyd's iteration holds the first row | N: N rows | 0: none, "
       "Poisson-disc seeds only");
   t.add(
-      "lloyd", [](O& o) -> int& { return o.mesher.lloyd.iterations; }, integer(0, 100),
-      "Lloyd iterations on the auto seeds: each interior seed but the first front row "
+      "lloyd", [](O& o) -> int& { return o.mesher.lloyd.iterations; },
+      integer(0, 100, {{"auto", kAutoIterations}}),
+      "Lloyd iterations on the auto seeds (auto: 30 on exact cells, 10 on grown ones): each "
+      "interior seed but the first front row "
       "moves to the metric centroid of its region (0: none)");
   t.add(
       "lloyd_cells", [](O& o) -> std::string& { return o.mesher.lloyd.cells; },

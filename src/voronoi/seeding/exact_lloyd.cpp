@@ -37,8 +37,10 @@ Eigen::Matrix2Xd exact_lloyd(Eigen::Matrix2Xd seeds, int fixed, const MetricFiel
     const Eigen::Matrix2d M = metric.metric_at(x);
     return Eigen::Matrix2d(std::sqrt(M.determinant()) * M);
   };
-  Progress progress("iteration", options.iterations);
-  for (int it = 0; it < options.iterations && fixed < S; ++it) {
+  const int iterations =
+      options.iterations == kAutoIterations ? kExactIterations : options.iterations;
+  Progress progress("iteration", iterations);
+  for (int it = 0; it < iterations && fixed < S; ++it) {
     progress.update(it + 1);
     const VoronoiCells cells = cgal_voronoi_cells(seeds);
     Eigen::Matrix2Xd next = seeds;

@@ -51,9 +51,11 @@ Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed, const std::
   if (!held.empty() && static_cast<int>(held.size()) != S)
     throw Error("voronoi: " + std::to_string(held.size()) + " held flags for " + std::to_string(S) +
                 " seeds");
-  Progress progress("iteration", options.iterations);
+  const int iterations =
+      options.iterations == kAutoIterations ? kGrownIterations : options.iterations;
+  Progress progress("iteration", iterations);
   share_stencils(problem, engine);
-  for (int it = 0; it < options.iterations && fixed < S; ++it) {
+  for (int it = 0; it < iterations && fixed < S; ++it) {
     progress.update(it + 1);
     const CrystalPartition p = grow_crystals(problem, engine);
     const Eigen::Matrix2Xd z =

@@ -31,8 +31,17 @@ Eigen::Matrix2Xd region_centroids(const CartesianGrid& grid, const Eigen::Vector
                                   int seeds, const MetricField& metric,
                                   const std::vector<Eigen::Matrix2d>& seed_metrics = {});
 
+/// LloydOptions::iterations: kExactIterations on exact cells, kGrownIterations
+/// on grown ones (each a growth of the crystals on a grid).
+constexpr int kAutoIterations = -1;
+constexpr int kExactIterations = 30, kGrownIterations = 10;
+
 struct LloydOptions {
-  int iterations = 10;  ///< growths and moves
+  /// Moves of every free seed (0: none), or kAutoIterations: 30 on exact
+  /// cells (on the corpus 30 against 10 put the mean ICN above Gmsh
+  /// frontal's on 40 of 41 models, against 39, at no measurable cost;
+  /// docs/voronoi.md), 10 on grown ones.
+  int iterations = kAutoIterations;
   /// A seed moves only if its centroid is this many cells (ds) inside the
   /// domain and from every other seed; otherwise it stays.
   double clearance_cells = 2.0;
