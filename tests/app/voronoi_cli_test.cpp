@@ -300,3 +300,31 @@ Mesh.MeshSizeFromCurvature = 0;
   CHECK(far / n_far > 0.064);
   CHECK(far / n_far < 0.096);
 }
+
+TEST_CASE("voronoi and mesh follow the .geo's Mesh.MeshSizeFactor, and their factor options",
+          "[app][voronoi]") {
+  // The plate's sizes scaled by 0.5 in the .geo: about 4 times the
+  // triangles for both meshers (they used to reset the factor to 1).
+  const TempDir dir;
+  const std::string out = dir / "factor.msh";
+  const std::string finer = dir / "finer.geo";
+  std::ofstream(finer) << "Include \"" << geo << "plate_hole.geo\";\nMesh.MeshSizeFactor = 0.5;\n";
+  const auto triangles = [&](const std::string& input, const std::string& stage) {
+    const auto r = run_homesh(input + " -m " + stage + " " + out);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    return logged(r.output, stage.rfind("voronoi", 0) == 0
+                                ? R"(voronoi: metric iso[^:]*: \d+ nodes, (\d+) triangles)"
+                                : R"(mesh: \d+ nodes, (\d+) triangles)");
+  };
+  for (const std::string stage : {"voronoi", "mesh"}) {
+    INFO(stage);
+    const double plain = triangles(geo + "plate_hole.geo", stage);
+    const double by_geo = triangles(finer, stage);
+    const double by_option = triangles(geo + "plate_hole.geo", stage + ":factor=0.5");
+    const double both = triangles(finer, stage + ":factor=1");
+    CHECK(by_geo / plain == Approx(4).epsilon(0.2));
+    CHECK(by_option / plain == Approx(4).epsilon(0.2));
+    CHECK(both / plain == Approx(1).epsilon(0.05));  // the option wins over the .geo
+  }
+}

@@ -37,7 +37,7 @@ Mesh gmsh_mesh(const std::string& input, const MeshOptions& o) {
     gmsh::option::setNumber("Mesh.Algorithm", o.algorithm);
     if (o.size_min > 0) gmsh::option::setNumber("Mesh.MeshSizeMin", o.size_min);
     if (o.size_max > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", o.size_max);
-    gmsh::option::setNumber("Mesh.MeshSizeFactor", o.factor);
+    if (o.factor > 0) gmsh::option::setNumber("Mesh.MeshSizeFactor", o.factor);
     gmsh::option::setNumber("Mesh.ElementOrder", 1);
     gmsh::option::setNumber("Mesh.RecombineAll", 0);
   });
@@ -56,8 +56,8 @@ Stage mesh_stage() {
         "smallest element size (Mesh.MeshSizeMin; 0 = Gmsh's default)");
   t.add("size_max", &MeshOptions::size_max, real(0),
         "largest element size (Mesh.MeshSizeMax; 0 = Gmsh's default)");
-  t.add("factor", &MeshOptions::factor, real(0, INFINITY, "(]"),
-        "factor on all sizes (Mesh.MeshSizeFactor)");
+  t.add("factor", &MeshOptions::factor, real(0),
+        "factor on all sizes (Mesh.MeshSizeFactor; 0 = the model's, e.g. set by the .geo)");
   t.add("algorithm", &MeshOptions::algorithm, choice(kAlgorithms), names_text(names));
   t.add("max_triangles", &MeshOptions::max_triangles, real(1, 1e12),
         "error if Gmsh makes more boundary lines or triangles than this");

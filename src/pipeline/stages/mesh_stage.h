@@ -3,11 +3,12 @@
 
 namespace homesh {
 
-/// Gmsh's meshing options the mesh stage sets (0 sizes: left to Gmsh).
+/// Gmsh's meshing options the mesh stage sets (0: left to Gmsh, i.e. the
+/// model's own, as a .geo, -clscale or a Gmsh-API script set them).
 struct MeshOptions {
   double size_min = 0;  ///< Mesh.MeshSizeMin
   double size_max = 0;  ///< Mesh.MeshSizeMax
-  double factor = 1;    ///< Mesh.MeshSizeFactor
+  double factor = 0;    ///< Mesh.MeshSizeFactor
   int algorithm = 6;    ///< Mesh.Algorithm: 6 = frontal-Delaunay
   /// Caps on Gmsh's mesher, which runs in a child process (a size 1e9 times too
   /// small would otherwise mesh for hours): boundary lines and triangles, and

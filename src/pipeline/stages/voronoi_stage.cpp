@@ -100,7 +100,9 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
 void run(Context& ctx, const VoronoiStageOptions& o) {
   ctx.require_cad("voronoi");
   const auto start = Clock::now();
-  const Mesh reference = gmsh_mesh(ctx.input, MeshOptions{});
+  MeshOptions sizes;
+  sizes.factor = o.factor;
+  const Mesh reference = gmsh_mesh(ctx.input, sizes);
 
   SeededBoundary boundary;
   MetricField metric = MetricField::constant(Eigen::Matrix2d::Identity());
@@ -173,6 +175,9 @@ Stage voronoi_stage() {
         "the walls: curves not in a group 'farfield') | viewN (the tensor view of tag N, "
         "e.g. merged by the .geo) | FILE.pos or FILE.msh (its last view, a tensor field) "
         "| FILE (a coarse grid of 2x2 SPD tensors, format in src/voronoi/voronoi_files.h)");
+  t.add("factor", &O::factor, real(0),
+        "factor on the sizes of Gmsh's default mesh, which the iso metric follows "
+        "(Mesh.MeshSizeFactor; 0 = the model's, e.g. set by the .geo or the script)");
   t.add("seeds", &O::seeds, text(),
         "auto (front rows, then Poisson-disc in the metric) | FILE (interior seeds, one 'x y' "
         "per line; the boundary seeds are placed from the metric)");

@@ -11,6 +11,7 @@ namespace homesh {
 struct VoronoiStageOptions {
   std::string metric = "iso";  ///< iso, bl, viewN or a file
   std::string seeds = "auto";  ///< auto or a file of interior seeds
+  double factor = 0;           ///< on the sizes of Gmsh's mesh (0: Mesh.MeshSizeFactor's)
   VoronoiMeshOptions mesher;
 };
 
