@@ -130,6 +130,16 @@ TEST_CASE("voronoi: a boundary-layer metric stretches the triangles at the walls
   CHECK(bl.output.find("walls: 1 curves not in a group 'farfield'") != std::string::npos);
   const std::string nodes = R"(voronoi: metric [^\n]*: (\d+) nodes)";
   CHECK(logged(bl.output, nodes) > logged(iso.output, nodes) + 30);
+  // Twice the default stretching at the wall, in a layer twice as thick: more
+  // nodes again; an aspect below 1 is refused, naming the option.
+  const auto bl10 =
+      run_homesh(geo + "plate_hole.geo -m voronoi:metric=bl:bl_aspect=10:bl_thickness=6 " + out);
+  INFO(bl10.output);
+  REQUIRE(bl10.exit_code == 0);
+  CHECK(logged(bl10.output, nodes) > logged(bl.output, nodes) + 30);
+  const auto bad = run_homesh(geo + "plate_hole.geo -m voronoi:metric=bl:bl_aspect=0.5 " + out);
+  CHECK(bad.exit_code != 0);
+  CHECK(bad.output.find("bl_aspect") != std::string::npos);
 }
 
 TEST_CASE("voronoi: seeds and metric from files, errors naming file and line", "[app][voronoi]") {

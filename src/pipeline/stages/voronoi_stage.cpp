@@ -30,7 +30,7 @@ constexpr int kCoarseMax = 400;      // coarse metric grid nodes along the longe
 // on the coarse grid of iso) or a file.
 MetricField make_metric(const std::string& metric, const Mesh& reference, const Eigen::Vector2d& lo,
                         const Eigen::Vector2d& hi, const SeededBoundary* walls_from,
-                        const std::vector<int>& walls) {
+                        const std::vector<int>& walls, const BoundaryLayerOptions& layer) {
   const bool view = gmsh_adapter::names_metric_view(metric);
   if (metric != "iso" && metric != "bl" && !view) return read_metric_file(metric);
   const Eigen::MatrixXi tri = reference.tri.topRows(3);
@@ -44,7 +44,7 @@ MetricField make_metric(const std::string& metric, const Mesh& reference, const 
   if (metric == "iso") return iso;
   std::vector<Eigen::Matrix2Xd> polylines;
   for (const int c : walls) polylines.push_back(walls_from->curve_samples.at(c));
-  return boundary_layer_metric(iso, polylines);
+  return boundary_layer_metric(iso, polylines, layer);
 }
 
 void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o) {
@@ -131,7 +131,7 @@ void run(Context& ctx, const VoronoiStageOptions& o) {
             "across every boundary curve ({}) as a wall",
             ctx.input, walls.size());
     }
-    metric = make_metric(o.metric, reference, lo, hi, &shape, walls);
+    metric = make_metric(o.metric, reference, lo, hi, &shape, walls, o.layer);
     boundary = gmsh_adapter::seed_boundary(
         kCurveSamples, [&](const Eigen::VectorXd& u, const Eigen::Matrix2Xd& x, bool closed) {
           return divide_by_metric_length(u, x, metric, closed ? 3 : 1);
@@ -171,10 +171,17 @@ Stage voronoi_stage() {
   OptionTable<O> t;
   t.add("metric", &O::metric, text(),
         "iso (the sizes of the mesh stage's default mesh, which follows the .geo's size "
-        "fields, its Background Field included) | bl (iso, 5 times finer across "
+        "fields, its Background Field included) | bl (iso, bl_aspect times finer across "
         "the walls: curves not in a group 'farfield') | viewN (the tensor view of tag N, "
         "e.g. merged by the .geo) | FILE.pos or FILE.msh (its last view, a tensor field) "
         "| FILE (a coarse grid of 2x2 SPD tensors, format in src/voronoi/voronoi_files.h)");
+  t.add(
+      "bl_aspect", [](O& o) -> double& { return o.layer.wall_aspect; }, real(1, 1e4),
+      "with metric=bl: the sizes' ratio along / across the walls at the walls");
+  t.add(
+      "bl_thickness", [](O& o) -> double& { return o.layer.thickness; }, real(0, 1e4, "(]"),
+      "with metric=bl: the size across the walls reaches the iso size this many iso sizes "
+      "from the walls (linearly)");
   t.add("factor", &O::factor, real(0),
         "factor on the sizes of Gmsh's default mesh, which the iso metric follows "
         "(Mesh.MeshSizeFactor; 0 = the model's, e.g. set by the .geo or the script)");

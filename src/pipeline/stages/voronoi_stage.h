@@ -2,6 +2,7 @@
 #include <string>
 
 #include "pipeline/stage.h"
+#include "voronoi/metric/size_metric.h"
 #include "voronoi/voronoi_mesh.h"
 
 namespace homesh {
@@ -12,6 +13,7 @@ struct VoronoiStageOptions {
   std::string metric = "iso";  ///< iso, bl, viewN or a file
   std::string seeds = "auto";  ///< auto or a file of interior seeds
   double factor = 0;           ///< on the sizes of Gmsh's mesh (0: Mesh.MeshSizeFactor's)
+  BoundaryLayerOptions layer;  ///< of metric=bl
   VoronoiMeshOptions mesher;
 };
 
