@@ -30,10 +30,13 @@ double largest_anisotropy(const MetricField& metric, const Eigen::Matrix2Xd& poi
 
 /// Seeds 0..fixed-1 stay, and so does every seed s with held[s] != 0 (held
 /// empty or one flag per seed); the others move to the centroids above,
-/// options.iterations times (kExactIterations for kAutoIterations) (Jacobi: every centroid from the
-/// same seeds), or until no seed moves by more than 1e-3 of its size. domain(x) < 0 inside the
-/// domain. A seed whose cell is unbounded or has a vertex outside stays that step; a centroid is
-/// taken only if it lies options.exact_clearance sizes (the metric's smallest semi-axis there)
+/// options.iterations times (kExactIterations for kAutoIterations; Jacobi:
+/// every centroid from the same seeds), or until no seed moves by more than
+/// 1e-3 of its size. domain(x) < 0 inside the domain. A seed whose cell is
+/// unbounded stays that step; a cell with a vertex outside the domain is
+/// integrated over its inside only (its fan triangles split in 36, their
+/// centroids tested). A centroid is taken only if it lies
+/// options.exact_clearance sizes (the metric's smallest semi-axis there)
 /// inside the domain and from every Delaunay neighbour.
 Eigen::Matrix2Xd exact_lloyd(Eigen::Matrix2Xd seeds, int fixed, const MetricField& metric,
                              const std::function<double(const Eigen::Vector2d&)>& domain,

@@ -79,6 +79,24 @@ TEST_CASE("exact Lloyd: one step is the brute-force centroid of the nearest-seed
   CHECK(moved.leftCols(s) == seeds.leftCols(s));      // the fixed seeds did not
 }
 
+TEST_CASE("exact Lloyd: a cell the boundary cuts is integrated over its inside",
+          "[voronoi][lloyd]") {
+  // The lattice point's unit cell cut by the wall x = 0.25: its inside is
+  // [-0.5, 0.25] x [-0.5, 0.5], centroid (-0.125, 0), to the sub-triangles'
+  // sampling (1/36 of each fan triangle).
+  const Eigen::Matrix2Xd seeds = lattice_with(Eigen::Vector2d(0.0, 0.0));
+  const Eigen::Index s = seeds.cols() - 1;
+  LloydOptions one;
+  one.iterations = 1;
+  const auto cut = [](const Eigen::Vector2d& x) { return std::max(square(x), x.x() - 0.25); };
+  const MetricField unit = MetricField::constant(Eigen::Matrix2d::Identity());
+  const Eigen::Matrix2Xd moved = exact_lloyd(seeds, static_cast<int>(s), unit, cut, one);
+  CHECK(moved(0, s) == Approx(-0.125).margin(0.01));
+  CHECK(moved(1, s) == Approx(0.0).margin(1e-9));
+  // Uncut, the cell's centroid is the seed itself.
+  CHECK(exact_lloyd(seeds, static_cast<int>(s), unit, square, one).col(s).norm() < 1e-12);
+}
+
 TEST_CASE("exact Lloyd: the centre of a symmetric ring is its fixed point; a density pulls",
           "[voronoi][lloyd]") {
   LloydOptions many;
