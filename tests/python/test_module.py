@@ -213,3 +213,22 @@ def test_a_mixed_mesh_is_curved_and_counted_quadrilaterals_included(session):
     q = homesh.quality(measures="Q4")
     assert q["results"]["quadrilaterals"] == quads and q["results"]["invalid"] == 0
     assert q["results"]["worst_element"] == v["worst_element"]
+
+
+def test_meshers_follow_and_keep_the_scripts_gmsh_options(session):
+    """mesh and voronoi take the sizes and algorithm the script set, options of their own win
+    for their call only, and the script's Gmsh options are as it left them after."""
+    gmsh.open(os.path.join(GEO, "plate_hole.geo"))
+    gmsh.model.mesh.generate(2)
+    plain = len(gmsh.model.mesh.getElements(2)[1][0])
+    gmsh.option.setNumber("Mesh.MeshSizeFactor", 0.5)
+    gmsh.option.setNumber("Mesh.Algorithm", 5)
+    for stage in (homesh.mesh, homesh.voronoi):
+        stage()
+        assert len(gmsh.model.mesh.getElements(2)[1][0]) / plain == pytest.approx(4, rel=0.2)
+        stage(factor=2)
+        assert len(gmsh.model.mesh.getElements(2)[1][0]) / plain == pytest.approx(0.25, rel=0.3)
+        assert gmsh.option.getNumber("Mesh.MeshSizeFactor") == 0.5
+        assert gmsh.option.getNumber("Mesh.Algorithm") == 5
+    homesh.mesh(algorithm="frontal")
+    assert gmsh.option.getNumber("Mesh.Algorithm") == 5

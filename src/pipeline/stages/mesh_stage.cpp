@@ -10,14 +10,16 @@
 
 #include "gmsh/generate_in_child.h"
 #include "gmsh/gmsh_call.h"
+#include "gmsh/option_scope.h"
 #include "gmsh/read_model.h"
 
 namespace homesh {
 namespace {
 
 // Gmsh's 2D algorithms that make triangles (Mesh.Algorithm numbers).
+// "model": the model's own (0: not set).
 const std::vector<std::pair<std::string, int>> kAlgorithms = {
-    {"meshadapt", 1}, {"auto", 2}, {"delaunay", 5}, {"frontal", 6}, {"bamg", 7}};
+    {"model", 0}, {"meshadapt", 1}, {"auto", 2}, {"delaunay", 5}, {"frontal", 6}, {"bamg", 7}};
 
 void run(Context& ctx, const MeshOptions& o) {
   ctx.require_cad("mesh");
@@ -33,13 +35,16 @@ void run(Context& ctx, const MeshOptions& o) {
 }  // namespace
 
 Mesh gmsh_mesh(const std::string& input, const MeshOptions& o) {
+  // The user's Gmsh options come back when the mesh is read: a script that
+  // calls homesh.mesh(factor=0.5) and then Gmsh's own generate gets its own.
+  gmsh_adapter::OptionScope options;
   gmsh_adapter::gmsh_call("stage 'mesh' on " + input, [&] {
-    gmsh::option::setNumber("Mesh.Algorithm", o.algorithm);
-    if (o.size_min > 0) gmsh::option::setNumber("Mesh.MeshSizeMin", o.size_min);
-    if (o.size_max > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", o.size_max);
-    if (o.factor > 0) gmsh::option::setNumber("Mesh.MeshSizeFactor", o.factor);
-    gmsh::option::setNumber("Mesh.ElementOrder", 1);
-    gmsh::option::setNumber("Mesh.RecombineAll", 0);
+    if (o.algorithm > 0) options.set("Mesh.Algorithm", o.algorithm);
+    if (o.size_min > 0) options.set("Mesh.MeshSizeMin", o.size_min);
+    if (o.size_max > 0) options.set("Mesh.MeshSizeMax", o.size_max);
+    if (o.factor > 0) options.set("Mesh.MeshSizeFactor", o.factor);
+    options.set("Mesh.ElementOrder", 1);
+    options.set("Mesh.RecombineAll", 0);
   });
   gmsh_adapter::generate_in_child(
       input, {static_cast<std::size_t>(o.max_triangles),
@@ -58,7 +63,10 @@ Stage mesh_stage() {
         "largest element size (Mesh.MeshSizeMax; 0 = Gmsh's default)");
   t.add("factor", &MeshOptions::factor, real(0),
         "factor on all sizes (Mesh.MeshSizeFactor; 0 = the model's, e.g. set by the .geo)");
-  t.add("algorithm", &MeshOptions::algorithm, choice(kAlgorithms), names_text(names));
+  t.add("algorithm", &MeshOptions::algorithm, choice(kAlgorithms),
+        names_text(names) +
+            " (model: the model's Mesh.Algorithm, as its .geo or script set it; "
+            "Gmsh's default is frontal)");
   t.add("max_triangles", &MeshOptions::max_triangles, real(1, 1e12),
         "error if Gmsh makes more boundary lines or triangles than this");
   t.add("max_seconds", &MeshOptions::max_seconds, real(1, 1e7),

@@ -9,7 +9,7 @@ struct MeshOptions {
   double size_min = 0;  ///< Mesh.MeshSizeMin
   double size_max = 0;  ///< Mesh.MeshSizeMax
   double factor = 0;    ///< Mesh.MeshSizeFactor
-  int algorithm = 6;    ///< Mesh.Algorithm: 6 = frontal-Delaunay
+  int algorithm = 0;    ///< Mesh.Algorithm (6 = frontal-Delaunay, Gmsh's default); 0: the model's
   /// Caps on Gmsh's mesher, which runs in a child process (a size 1e9 times too
   /// small would otherwise mesh for hours): boundary lines and triangles, and
   /// wall seconds; 3/4 of the machine's memory is the third cap.
