@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <string>
 
 #include "core/error.h"
 
@@ -73,6 +74,12 @@ MetricField iso_metric_from_sizes(const CartesianGrid& g, const Eigen::Matrix2Xd
 MetricField boundary_layer_metric(const MetricField& iso,
                                   const std::vector<Eigen::Matrix2Xd>& walls,
                                   const BoundaryLayerOptions& o) {
+  if (!(o.wall_aspect >= 1.0 && std::isfinite(o.wall_aspect)))
+    throw Error("boundary-layer metric: wall aspect " + std::to_string(o.wall_aspect) +
+                " is not a finite number >= 1");
+  if (!(o.thickness > 0.0 && std::isfinite(o.thickness)))
+    throw Error("boundary-layer metric: thickness " + std::to_string(o.thickness) +
+                " is not a finite number > 0");
   const CartesianGrid& g = iso.coarse();
   // Wall samples with their unit tangents, in buckets for a ring search.
   std::vector<Eigen::Vector2d> pts, tangents;

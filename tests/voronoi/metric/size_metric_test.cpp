@@ -49,6 +49,20 @@ TEST_CASE("a boundary-layer metric is fine across the wall and relaxes", "[voron
     CHECK(1 / std::sqrt(M(0, 0)) == Approx(0.1).epsilon(1e-9));
     CHECK(M(0, 1) == Approx(0.0).margin(1e-9));
   }
+  // Twice the aspect, twice the thickness: 0.01 across at the wall, 0.1
+  // beyond 0.6; an aspect below 1 or no thickness is refused.
+  BoundaryLayerOptions o;
+  o.wall_aspect = 10;
+  o.thickness = 6;
+  const MetricField bl10 = boundary_layer_metric(iso, {wall}, o);
+  CHECK(1 / std::sqrt(bl10.metric(coarse.index(10, 0))(1, 1)) == Approx(0.01).epsilon(1e-9));
+  CHECK(1 / std::sqrt(bl10.metric(coarse.index(10, 6))(1, 1)) ==
+        Approx(0.1 * (0.1 + 0.9 * 0.3 / 0.6)).epsilon(1e-9));
+  o.wall_aspect = 0.5;
+  CHECK_THROWS_WITH(boundary_layer_metric(iso, {wall}, o), Catch::Contains("wall aspect"));
+  o.wall_aspect = 5;
+  o.thickness = 0;
+  CHECK_THROWS_WITH(boundary_layer_metric(iso, {wall}, o), Catch::Contains("thickness"));
 }
 
 TEST_CASE("a curve divided into pieces of unit metric length", "[voronoi][sizes]") {
