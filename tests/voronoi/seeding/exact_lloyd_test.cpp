@@ -46,6 +46,14 @@ Eigen::Vector2d brute_centroid(const Eigen::Matrix2Xd& seeds, Eigen::Index s, in
   return sum / count;
 }
 
+// One exact Lloyd step of the last seed, the others fixed.
+Eigen::Matrix2Xd one_step(const Eigen::Matrix2Xd& seeds, const MetricField& metric,
+                          const std::function<double(const Eigen::Vector2d&)>& domain) {
+  LloydOptions one;
+  one.iterations = 1;
+  return exact_lloyd(seeds, static_cast<int>(seeds.cols() - 1), metric, domain, one);
+}
+
 }  // namespace
 
 TEST_CASE("voronoi cells: a lattice point's cell is its unit square, a hull point's is unbounded",
@@ -69,10 +77,8 @@ TEST_CASE("exact Lloyd: one step is the brute-force centroid of the nearest-seed
           "[voronoi][lloyd]") {
   const Eigen::Matrix2Xd seeds = lattice_with(Eigen::Vector2d(0.3, 0.2));
   const Eigen::Index s = seeds.cols() - 1;
-  LloydOptions one;
-  one.iterations = 1;
   const MetricField constant = MetricField::constant(metric_from_axes(0.4, 2.0, 0.5));
-  const Eigen::Matrix2Xd moved = exact_lloyd(seeds, static_cast<int>(s), constant, square, one);
+  const Eigen::Matrix2Xd moved = one_step(seeds, constant, square);
   const Eigen::Vector2d expected = brute_centroid(seeds, s, 800, constant);
   CHECK((moved.col(s) - expected).norm() < 2e-3);
   CHECK((moved.col(s) - seeds.col(s)).norm() > 0.1);  // it did move
@@ -86,15 +92,13 @@ TEST_CASE("exact Lloyd: a cell the boundary cuts is integrated over its inside",
   // sampling (1/36 of each fan triangle).
   const Eigen::Matrix2Xd seeds = lattice_with(Eigen::Vector2d(0.0, 0.0));
   const Eigen::Index s = seeds.cols() - 1;
-  LloydOptions one;
-  one.iterations = 1;
   const auto cut = [](const Eigen::Vector2d& x) { return std::max(square(x), x.x() - 0.25); };
   const MetricField unit = MetricField::constant(Eigen::Matrix2d::Identity());
-  const Eigen::Matrix2Xd moved = exact_lloyd(seeds, static_cast<int>(s), unit, cut, one);
+  const Eigen::Matrix2Xd moved = one_step(seeds, unit, cut);
   CHECK(moved(0, s) == Approx(-0.125).margin(0.01));
   CHECK(moved(1, s) == Approx(0.0).margin(1e-9));
   // Uncut, the cell's centroid is the seed itself.
-  CHECK(exact_lloyd(seeds, static_cast<int>(s), unit, square, one).col(s).norm() < 1e-12);
+  CHECK(one_step(seeds, unit, square).col(s).norm() < 1e-12);
 }
 
 TEST_CASE("exact Lloyd: the centre of a symmetric ring is its fixed point; a density pulls",
@@ -118,9 +122,7 @@ TEST_CASE("exact Lloyd: the centre of a symmetric ring is its fixed point; a den
     }
   const MetricField graded(coarse, M);
   CHECK(largest_anisotropy(graded, seeds) == Approx(1.0));
-  LloydOptions one;
-  one.iterations = 1;
-  const Eigen::Matrix2Xd step = exact_lloyd(seeds, static_cast<int>(s), graded, square, one);
+  const Eigen::Matrix2Xd step = one_step(seeds, graded, square);
   CHECK((step.col(s) - brute_centroid(seeds, s, 800, graded)).norm() < 5e-3);
   CHECK((step.col(s) - brute_centroid(seeds, s, 800, unit)).norm() > 0.05);  // the weight tells
   const Eigen::Matrix2Xd pulled = exact_lloyd(seeds, static_cast<int>(s), graded, square, many);
