@@ -123,6 +123,14 @@ SurfaceLoops surface_loops(const SeededBoundary& b, const SurfaceBoundary& s) {
   return out;
 }
 
+// One flag per node: 1 for an interior node (on a surface), which the
+// clean-up may move or remove.
+std::vector<char> interior_nodes(const std::vector<NodeClass>& node_class) {
+  std::vector<char> interior(node_class.size());
+  for (std::size_t k = 0; k < node_class.size(); ++k) interior[k] = node_class[k].dim == 2;
+  return interior;
+}
+
 // Drops nodes `gone` (ascending; in no triangle, line or point) from m,
 // renumbering the others in order.
 void drop_nodes(Mesh& m, const std::vector<int>& gone) {
@@ -291,10 +299,7 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
       (o.lloyd.cells == "exact" ||
        (o.lloyd.cells == "auto" && largest_anisotropy(metric, p.seeds) <= kIsotropic));
   rep.exact_lloyd = exact;
-  rep.lloyd_iterations = !auto_seeds                             ? 0
-                         : o.lloyd.iterations != kAutoIterations ? o.lloyd.iterations
-                         : exact                                 ? kExactIterations
-                                                                 : kGrownIterations;
+  rep.lloyd_iterations = auto_seeds ? lloyd_iterations(o.lloyd, exact) : 0;
   if (exact) {
     phase.update(0, "Lloyd's iteration on the seeds' exact cells");
     p.seeds = exact_lloyd(
@@ -473,9 +478,8 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
 
   // Topological clean-up: the interior nodes of three triangles go.
   if (o.cleanup) {
-    std::vector<char> interior(nodes.size());
-    for (std::size_t k = 0; k < nodes.size(); ++k) interior[k] = node_class[k].dim == 2;
-    rep.valence_three = remove_valence_three(triangles, triangle_surface, interior);
+    rep.valence_three =
+        remove_valence_three(triangles, triangle_surface, interior_nodes(node_class));
   }
   // Nodes no triangle uses (interior seeds cut off by a boundary chord) go.
   std::vector<int> renumber(nodes.size(), -1);
@@ -521,8 +525,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
     return 4 * std::sqrt(3.0) * area / (a.dot(M * a) + b.dot(M * b) + c.dot(M * c));
   };
   if (o.smooth > 0) {
-    std::vector<char> free_node(m.node_class.size());
-    for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
+    std::vector<char> free_node = interior_nodes(m.node_class);
     rep.smoothing_moves = smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
     if (o.cleanup) {
       rep.flips += flip_edges(m, metric_mean_ratio);
@@ -532,8 +535,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
       rep.valence_four = static_cast<int>(gone.size());
       if (!gone.empty()) {
         drop_nodes(m, gone);
-        free_node.assign(m.node_class.size(), 0);
-        for (std::size_t k = 0; k < free_node.size(); ++k) free_node[k] = m.node_class[k].dim == 2;
+        free_node = interior_nodes(m.node_class);
         rep.smoothing_moves += smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
         rep.flips += flip_edges(m, metric_mean_ratio);
       }

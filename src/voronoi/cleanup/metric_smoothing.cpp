@@ -30,7 +30,15 @@ struct Patch {
   double worst, inverse;
 };
 Patch patch(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Vector2d& p,
-            const Eigen::Matrix2d& M);
+            const Eigen::Matrix2d& M) {
+  Patch out{std::numeric_limits<double>::infinity(), 0.0};
+  for (const auto& [a, b] : s) {
+    const double q = metric_mean_ratio(p, x.col(a), x.col(b), M);
+    out.worst = std::min(out.worst, q);
+    out.inverse += q > 0.0 ? 1.0 / q : std::numeric_limits<double>::infinity();
+  }
+  return out;
+}
 
 // Compass search from `to`: the 8 steps of length h round the best point so
 // far, h halved on failure, until h is kSearchTolerance of the first or
@@ -66,21 +74,6 @@ double metric_mean_ratio(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
   const double edges = u.dot(M * u) + v.dot(M * v) + w.dot(M * w);
   return edges > 0.0 ? 4.0 * std::sqrt(3.0) * area * std::sqrt(M.determinant()) / edges : 0.0;
 }
-
-namespace {
-
-Patch patch(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Vector2d& p,
-            const Eigen::Matrix2d& M) {
-  Patch out{std::numeric_limits<double>::infinity(), 0.0};
-  for (const auto& [a, b] : s) {
-    const double q = metric_mean_ratio(p, x.col(a), x.col(b), M);
-    out.worst = std::min(out.worst, q);
-    out.inverse += q > 0.0 ? 1.0 / q : std::numeric_limits<double>::infinity();
-  }
-  return out;
-}
-
-}  // namespace
 
 int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
                       const std::vector<char>& free_node, const MetricField& metric, int sweeps) {
@@ -135,10 +128,6 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
     }
   return moves;
 }
-
-}  // namespace homesh
-
-namespace homesh {
 
 int raise_worst_triangle(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
                          const std::vector<char>& free_node, const MetricField& metric,

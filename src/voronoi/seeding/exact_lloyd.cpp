@@ -33,12 +33,7 @@ Eigen::Matrix2Xd exact_lloyd(Eigen::Matrix2Xd seeds, int fixed, const MetricFiel
   if (!held.empty() && static_cast<Eigen::Index>(held.size()) != S)
     throw Error("voronoi: " + std::to_string(held.size()) + " held flags for " + std::to_string(S) +
                 " seeds");
-  const auto weight = [&metric](const Eigen::Vector2d& x) {
-    const Eigen::Matrix2d M = metric.metric_at(x);
-    return Eigen::Matrix2d(std::sqrt(M.determinant()) * M);
-  };
-  const int iterations =
-      options.iterations == kAutoIterations ? kExactIterations : options.iterations;
+  const int iterations = lloyd_iterations(options, true);
   Progress progress("iteration", iterations);
   for (int it = 0; it < iterations && fixed < S; ++it) {
     progress.update(it + 1);
@@ -58,7 +53,7 @@ Eigen::Matrix2Xd exact_lloyd(Eigen::Matrix2Xd seeds, int fixed, const MetricFiel
       Eigen::Matrix2d A = Eigen::Matrix2d::Zero();
       Eigen::Vector2d b = Eigen::Vector2d::Zero();
       const auto add = [&](const Eigen::Vector2d& m, double w) {
-        const Eigen::Matrix2d W = w * weight(m);
+        const Eigen::Matrix2d W = w * centroid_weight(metric.metric_at(m));
         A += W;
         b += W * m;
       };

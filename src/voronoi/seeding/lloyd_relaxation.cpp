@@ -27,7 +27,7 @@ Eigen::Matrix2Xd region_centroids(const CartesianGrid& g, const Eigen::VectorXi&
       const Eigen::Matrix2d M = !seed_metrics.empty() ? seed_metrics[s]
                                 : constant            ? metric.metric(0)
                                                       : metric.metric_at(x);
-      const Eigen::Matrix2d W = std::sqrt(M.determinant()) * M;
+      const Eigen::Matrix2d W = centroid_weight(M);
       const Eigen::Vector2d Mx = W * x;
       sum[s] +=
           (Eigen::Matrix<double, 5, 1>() << W(0, 0), W(0, 1), W(1, 1), Mx.x(), Mx.y()).finished();
@@ -51,8 +51,7 @@ Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed, const std::
   if (!held.empty() && static_cast<int>(held.size()) != S)
     throw Error("voronoi: " + std::to_string(held.size()) + " held flags for " + std::to_string(S) +
                 " seeds");
-  const int iterations =
-      options.iterations == kAutoIterations ? kGrownIterations : options.iterations;
+  const int iterations = lloyd_iterations(options, false);
   Progress progress("iteration", iterations);
   share_stencils(problem, engine);
   for (int it = 0; it < iterations && fixed < S; ++it) {

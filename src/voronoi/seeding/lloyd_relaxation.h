@@ -17,11 +17,18 @@
 // the plain centroid in a constant metric, weighted by 1/h^2 in the
 // isotropic metric M = I / h^2 of a size field h.
 #include <Eigen/Core>
+#include <Eigen/LU>
+#include <cmath>
 #include <string>
 
 #include "voronoi/engines/voronoi_problem.h"
 
 namespace homesh {
+
+/// The weight of a point in the centroids above: W = sqrt(det M) M.
+inline Eigen::Matrix2d centroid_weight(const Eigen::Matrix2d& M) {
+  return std::sqrt(M.determinant()) * M;
+}
 
 /// The centroids above of the regions of seeds 0..seeds-1 in `labels`
 /// (grid.node_count() crystal ids, -1: none), each region in the metric it
@@ -55,6 +62,14 @@ struct LloydOptions {
   /// domain and from every neighbour.
   double exact_clearance = 0.25;
 };
+
+/// The iterations `o` asks for on exact or grown cells (kAutoIterations
+/// resolved).
+inline int lloyd_iterations(const LloydOptions& o, bool exact) {
+  return o.iterations != kAutoIterations ? o.iterations
+         : exact                         ? kExactIterations
+                                         : kGrownIterations;
+}
 
 /// Semi-axes within this ratio: isotropic, for LloydOptions::cells = "auto".
 constexpr double kIsotropic = 1.01;
