@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "core/node_triangles.h"
+
 namespace homesh {
 namespace {
 
@@ -24,20 +26,15 @@ std::vector<int> remove_valence_four(Mesh& m, const std::vector<char>& free_node
     return u.x() * v.y() - u.y() * v.x() > 0.0;
   };
   for (int round = 0; round < kMaxRounds; ++round) {
-    // The triangles round each free node (up to 5 kept: only 4 matter).
-    std::vector<std::vector<int>> star(m.x.cols());
-    for (Eigen::Index t = 0; t < m.tri.cols(); ++t)
-      for (int k = 0; k < 3; ++k) {
-        const int v = m.tri(k, t);
-        if (free_node[v] && star[v].size() < 5) star[v].push_back(static_cast<int>(t));
-      }
+    const NodeTriangles around(m);
     std::vector<char> gone(m.tri.cols(), 0);
     std::vector<std::array<int, 3>> added;
     std::vector<int> added_entity;
     const std::size_t before = removed.size();
-    for (std::size_t v = 0; v < star.size(); ++v) {
-      const std::vector<int>& s = star[v];
-      if (s.size() != 4 || std::any_of(s.begin(), s.end(), [&](int t) { return gone[t] != 0; }) ||
+    for (int v = 0; v < m.num_nodes(); ++v) {
+      if (!free_node[v] || around.end(v) - around.begin(v) != 4) continue;
+      const std::vector<int> s(around.begin(v), around.end(v));
+      if (std::any_of(s.begin(), s.end(), [&](int t) { return gone[t] != 0; }) ||
           std::any_of(s.begin(), s.end(),
                       [&](int t) { return m.tri_entity[t] != m.tri_entity[s[0]]; }))
         continue;
@@ -46,7 +43,7 @@ std::vector<int> remove_valence_four(Mesh& m, const std::vector<char>& free_node
       std::array<std::array<int, 2>, 4> ab;
       for (int k = 0; k < 4; ++k) {
         int i = 0;
-        while (m.tri(i, s[k]) != static_cast<int>(v)) ++i;
+        while (m.tri(i, s[k]) != v) ++i;
         ab[k] = {m.tri((i + 1) % 3, s[k]), m.tri((i + 2) % 3, s[k])};
       }
       std::array<int, 4> ring{ab[0][0], ab[0][1], -1, -1};
@@ -62,7 +59,7 @@ std::vector<int> remove_valence_four(Mesh& m, const std::vector<char>& free_node
           }))
         continue;
       double worst = 1e300;
-      for (const auto& [a, b] : ab) worst = std::min(worst, q(static_cast<int>(v), a, b));
+      for (const auto& [a, b] : ab) worst = std::min(worst, q(v, a, b));
       double best = -1e300;
       int split = -1;
       for (int d = 0; d < 2; ++d) {
@@ -81,7 +78,7 @@ std::vector<int> remove_valence_four(Mesh& m, const std::vector<char>& free_node
       added.push_back({a, b, c});
       added.push_back({a, c, e});
       added_entity.insert(added_entity.end(), 2, m.tri_entity[s[0]]);
-      removed.push_back(static_cast<int>(v));
+      removed.push_back(v);
     }
     if (removed.size() == before) break;
     const Eigen::Index kept = std::count(gone.begin(), gone.end(), 0);
