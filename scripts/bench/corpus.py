@@ -83,6 +83,16 @@ WALL = "wall"
 
 # ---------------------------------------------------------------- aerofoil sections
 
+def method_options(method):
+    """The homesh stage options of a benchmark method "NAME K=V:K=V" ({} for a bare "NAME"; the
+    values stay text, which the stage parses as the CLI does): the --variant methods of
+    curving_corpus.py and voronoi_corpus.py."""
+    words = method.split(" ", 1)
+    if len(words) == 1:
+        return {}
+    return dict(kv.split("=", 1) for kv in words[1].split(":"))
+
+
 def naca_section(code):
     """(t, camber) of a NACA 4-digit (MPTT) or 5-digit (LPQTT, non-reflexed Q = 0) section:
     t the thickness over chord, camber(x) -> (yc, dyc/dx) on x in [0, 1]."""

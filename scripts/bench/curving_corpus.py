@@ -66,14 +66,6 @@ def first_line(e):
     return str(e).splitlines()[0] if str(e) else type(e).__name__
 
 
-def variant_options(method):
-    """The curve options of a method "homesh NAME" (NAME: "k=v:k=v", see --variant)."""
-    words = method.split(" ", 1)
-    if len(words) == 1:
-        return {}
-    return dict(kv.split("=", 1) for kv in words[1].split(":"))
-
-
 def curved_to(gmsh, p):
     return all(gmsh.model.mesh.getElementProperties(t)[2] == p
                for t in gmsh.model.mesh.getElementTypes(2))
@@ -98,7 +90,7 @@ def child(conn, name, msh, p, method, rebuild):
         if method.split(" ")[0] == "homesh":
             import homesh
             homesh.set_quiet(True)
-            r = homesh.curve(p=p, **variant_options(method))
+            r = homesh.curve(p=p, **corpus.method_options(method))
             logged = [float(v) for k, v in (r.get("results") or {}).items() if "seconds" in k]
             stage = sum(logged) if logged else ""
         else:

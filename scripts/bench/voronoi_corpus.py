@@ -52,25 +52,6 @@ def models():
     return out
 
 
-def options(method):
-    """homesh.voronoi's keyword options of a method name: 'voronoi', 'voronoi windows=off' or
-    a variant 'voronoi K=V:K=V' (numbers as numbers, on/off as booleans)."""
-    out = {}
-    for item in (method.split(" ", 1)[1].split(":") if " " in method else []):
-        key, value = item.split("=", 1)
-        if value in ("on", "off"):
-            out[key] = value == "on"
-        else:
-            try:
-                out[key] = int(value)
-            except ValueError:
-                try:
-                    out[key] = float(value)
-                except ValueError:
-                    out[key] = value
-    return out
-
-
 def child(conn, name, method):
     import gmsh
     row = dict(case=name, method=method, status="ok")
@@ -93,7 +74,7 @@ def child(conn, name, method):
         else:
             import homesh
             homesh.set_quiet(True)
-            r = homesh.voronoi(**options(method))
+            r = homesh.voronoi(**corpus.method_options(method))
             filled = r["results"]["filled_triangles"]
         row["seconds"] = time.perf_counter() - start
         q_min, q_mean, triangles, invalid = icn()
