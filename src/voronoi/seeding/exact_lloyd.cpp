@@ -3,9 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <string>
 
-#include "core/error.h"
 #include "core/progress.h"
 #include "voronoi/dual/cgal_delaunay.h"
 
@@ -30,9 +28,7 @@ Eigen::Matrix2Xd exact_lloyd(Eigen::Matrix2Xd seeds, int fixed, const MetricFiel
                              const std::function<double(const Eigen::Vector2d&)>& domain,
                              const LloydOptions& options, const std::vector<char>& held) {
   const Eigen::Index S = seeds.cols();
-  if (!held.empty() && static_cast<Eigen::Index>(held.size()) != S)
-    throw Error("voronoi: " + std::to_string(held.size()) + " held flags for " + std::to_string(S) +
-                " seeds");
+  check_held(held, S);
   const int iterations = lloyd_iterations(options, true);
   Progress progress("iteration", iterations);
   for (int it = 0; it < iterations && fixed < S; ++it) {

@@ -43,14 +43,18 @@ Eigen::Matrix2Xd region_centroids(const CartesianGrid& g, const Eigen::VectorXi&
   return z;
 }
 
+void check_held(const std::vector<char>& held, Eigen::Index seeds) {
+  if (!held.empty() && static_cast<Eigen::Index>(held.size()) != seeds)
+    throw Error("voronoi: " + std::to_string(held.size()) + " held flags for " +
+                std::to_string(seeds) + " seeds");
+}
+
 Eigen::Matrix2Xd lloyd_relaxation(VoronoiProblem problem, int fixed, const std::string& engine,
                                   const LloydOptions& options, const std::vector<char>& held) {
   const CartesianGrid& g = problem.grid;
   const double clearance = options.clearance_cells * g.ds();
   const int S = static_cast<int>(problem.seeds.cols());
-  if (!held.empty() && static_cast<int>(held.size()) != S)
-    throw Error("voronoi: " + std::to_string(held.size()) + " held flags for " + std::to_string(S) +
-                " seeds");
+  check_held(held, S);
   const int iterations = lloyd_iterations(options, false);
   Progress progress("iteration", iterations);
   share_stencils(problem, engine);

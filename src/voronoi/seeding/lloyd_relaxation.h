@@ -20,6 +20,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "voronoi/engines/voronoi_problem.h"
 
@@ -70,6 +71,9 @@ inline int lloyd_iterations(const LloydOptions& o, bool exact) {
          : exact                         ? kExactIterations
                                          : kGrownIterations;
 }
+
+/// Throws homesh::Error unless `held` is empty or has one flag per seed.
+void check_held(const std::vector<char>& held, Eigen::Index seeds);
 
 /// Semi-axes within this ratio: isotropic, for LloydOptions::cells = "auto".
 constexpr double kIsotropic = 1.01;
