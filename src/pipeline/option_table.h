@@ -73,7 +73,7 @@ class OptionTable {
   /// Key, default (shown from T{}) and help of every option, in table order.
   std::vector<OptionSpec> specs() const {
     std::vector<OptionSpec> out;
-    T defaults{};
+    T defaults = T();  // not T{}: GCC 12 warns falsely (maybe-uninitialized) on its strings
     for (const Row& r : rows_) out.push_back({r.key, r.show(defaults), r.help});
     return out;
   }
