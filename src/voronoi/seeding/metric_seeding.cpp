@@ -210,12 +210,12 @@ Eigen::Matrix2Xd metric_interior_seeds(const CartesianGrid& g, const Eigen::Vect
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<Eigen::Vector2d> interior;
   const auto try_add = [&](const Eigen::Vector2d& q) {
+    // The spacing first: it rejects most candidates, and costs less.
     const Eigen::Matrix2d Mq = metric.metric_at(q);
-    const Eigen::Matrix2d root_inv =
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(Mq).operatorInverseSqrt();
-    if (!test.ball_inside(q, root_inv, o.boundary_gap)) return false;
-    const double reach = 2.0 * o.spacing * (1 + o.annulus) * metric_max_speed(Mq);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(Mq);
+    const double reach = 2.0 * o.spacing * (1 + o.annulus) / std::sqrt(eig.eigenvalues()(0));
     if (!spaced_from(buckets, metric, q, Mq, o.spacing, reach)) return false;
+    if (!test.ball_inside(q, eig.operatorInverseSqrt(), o.boundary_gap)) return false;
     buckets.add(q);
     active.push_back(q);
     interior.push_back(q);
