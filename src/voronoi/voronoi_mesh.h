@@ -33,6 +33,12 @@ struct VoronoiMeshOptions {
   /// removed (voronoi/cleanup/valence_three.h), edges flipped where that raises the
   /// worst mean ratio (Q11) in the metric, after the smoothing.
   bool cleanup = true;
+  /// The triangulation the clean-up starts from | grown: the dual of the
+  /// crystals grown on the grid (thesis Ch 2) | exact: the Delaunay
+  /// triangulation of the seeds (CGAL), dual to their Euclidean Voronoi
+  /// cells, the crystals of a locally constant isotropic metric | auto:
+  /// exact where the metric is isotropic everywhere, else grown.
+  std::string dual = "auto";
   std::string engine = "fast_marching";  ///< a name of voronoi_engines()
   int grid = 0;  ///< grid nodes along a surface's longer side; 0: its smallest size over 6 cells
   /// With grid = 0: the crystals grow on a grid sized for all but the finer
@@ -56,6 +62,7 @@ struct VoronoiSurfaceReport {
   long encroaching_dropped = 0;  ///< automatic seeds in a boundary segment's diametral circle
   bool exact_lloyd = false;      ///< Lloyd's iteration on exact cells (exact_lloyd.h)
   int lloyd_iterations = 0;      ///< its iterations (at most: exact cells stop once still)
+  bool exact_dual = false;       ///< the seeds' Delaunay triangulation, no growth
   double seeding_seconds = 0, growth_seconds = 0;
   long dual_size = 0;         ///< triangles of the first dual
   bool dual_checked = false;  ///< the refined dual passed check_dual

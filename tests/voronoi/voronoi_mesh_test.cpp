@@ -178,6 +178,7 @@ TEST_CASE(
   const MetricField metric(coarse, M);
   homesh::VoronoiMeshOptions o;
   o.lloyd.iterations = 4;
+  o.dual = "grown";  // the isotropic metric would take the exact dual, no grid
   homesh::VoronoiReport windows, one_grid;
   const homesh::Mesh a = homesh::voronoi_mesh(b, metric, o, &windows);
   o.fine_windows = false;
@@ -263,4 +264,57 @@ TEST_CASE("voronoi_mesh: the front rows go round a hole as round the outer loop"
   INFO(row1 << " " << row2);
   CHECK(row1 >= 16);
   CHECK(row2 >= 15);
+}
+
+TEST_CASE("voronoi_mesh: an isotropic metric takes the exact dual, the seeds' Delaunay triangles",
+          "[voronoi]") {
+  double (*h)(double) = [](double x) { return 0.02 + 0.08 * x; };
+  const SeededBoundary b = graded_square(h);
+  const homesh::CartesianGrid coarse =
+      homesh::CartesianGrid::spanning({-0.05, -0.05}, {1.05, 1.05}, 23, 23);
+  std::vector<Eigen::Matrix2d> iso(coarse.node_count()), aniso(coarse.node_count());
+  for (int j = 0; j < coarse.ny; ++j)
+    for (int i = 0; i < coarse.nx; ++i) {
+      const double hx = h(std::clamp(coarse.point(i, j).x(), 0.0, 1.0));
+      iso[coarse.index(i, j)] = Eigen::Matrix2d::Identity() / (hx * hx);
+      aniso[coarse.index(i, j)] = Eigen::Vector2d(1 / (hx * hx), 0.25 / (hx * hx)).asDiagonal();
+    }
+  homesh::VoronoiMeshOptions o;
+  o.smooth = 0;  // the dual's triangles as they are
+  o.cleanup = false;
+  o.raise_worst = 0;
+  homesh::VoronoiReport rep;
+  const homesh::Mesh m = homesh::voronoi_mesh(b, MetricField(coarse, iso), o, &rep);
+  const homesh::VoronoiSurfaceReport& s = rep.surfaces.at(0);
+  CHECK(s.exact_dual);
+  CHECK(s.exact_lloyd);
+  CHECK(s.filled == 0);
+  CHECK(s.windows == 0);
+  CHECK(total_area(m) == Approx(1.0).epsilon(1e-12));
+  // Delaunay: no node inside a triangle's circumcircle (beyond round-off).
+  int violations = 0;
+  for (Eigen::Index f = 0; f < m.tri.cols(); ++f) {
+    const Eigen::Vector2d a = m.x.col(m.tri(0, f)), p = m.x.col(m.tri(1, f)),
+                          c = m.x.col(m.tri(2, f));
+    const Eigen::Vector2d u = p - a, v = c - a;
+    const double d = 2 * (u.x() * v.y() - u.y() * v.x());
+    const Eigen::Vector2d centre =
+        a + Eigen::Vector2d(v.y() * u.squaredNorm() - u.y() * v.squaredNorm(),
+                            u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) /
+                d;
+    const double r = (a - centre).norm();
+    for (Eigen::Index k = 0; k < m.x.cols(); ++k)
+      violations += (m.x.col(k) - centre).norm() < r * (1 - 1e-9);
+  }
+  CHECK(violations == 0);
+  // An anisotropic metric grows the crystals; the option forces either.
+  homesh::VoronoiReport grown;
+  homesh::voronoi_mesh(b, MetricField(coarse, aniso), o, &grown);
+  CHECK_FALSE(grown.surfaces.at(0).exact_dual);
+  o.dual = "grown";
+  homesh::voronoi_mesh(b, MetricField(coarse, iso), o, &grown);
+  CHECK_FALSE(grown.surfaces.at(0).exact_dual);
+  o.dual = "Exact";
+  CHECK_THROWS_WITH(homesh::voronoi_mesh(b, MetricField(coarse, iso), o),
+                    "voronoi: the dual 'Exact' is none of auto, exact, grown");
 }

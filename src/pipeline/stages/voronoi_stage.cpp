@@ -47,23 +47,33 @@ MetricField make_metric(const std::string& metric, const Mesh& reference, const 
   return boundary_layer_metric(iso, polylines, layer);
 }
 
+// How the dual was made, for the log.
+std::string dual_text(const VoronoiSurfaceReport& s, const VoronoiMeshOptions& o) {
+  if (s.exact_dual) return "exact dual (Delaunay of the seeds, no growth)";
+  return "engine " + o.engine;
+}
+
 void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o) {
   for (const VoronoiSurfaceReport& s : rep.surfaces) {
     log.info(
         "voronoi: surface {}: grid {} x {} (ds {:.4g}), {} boundary + {} front + {} interior "
-        "seeds ({}, {:.2f} s), engine {} {:.2f} s",
+        "seeds ({}, {:.2f} s), {} {:.2f} s",
         s.tag, s.grid.nx, s.grid.ny, s.grid.ds(), s.boundary_seeds, s.front_seeds, s.interior_seeds,
         o.seeds != "auto" ? o.seeds
                           : fmt::format("Poisson-disc in the metric, {} Lloyd iterations on {} "
                                         "cells, {} encroaching on a boundary segment dropped",
                                         s.lloyd_iterations, s.exact_lloyd ? "exact" : "grown",
                                         s.encroaching_dropped),
-        s.seeding_seconds, o.mesher.engine, s.growth_seconds);
-    log.info(
-        "voronoi: surface {}: dual {} triangles, check {} after {} refinement rounds (+{} "
-        "seeds at faulty triple points)",
-        s.tag, s.dual_size, s.dual_checked ? "passed" : "FAILED", s.refinement_rounds,
-        s.refined_seeds);
+        s.seeding_seconds, dual_text(s, o.mesher), s.growth_seconds);
+    if (s.exact_dual)
+      log.info("voronoi: surface {}: dual {} triangles, {} boundary segments not among their edges",
+               s.tag, s.dual_size, s.missed_segments);
+    else
+      log.info(
+          "voronoi: surface {}: dual {} triangles, check {} after {} refinement rounds (+{} "
+          "seeds at faulty triple points)",
+          s.tag, s.dual_size, s.dual_checked ? "passed" : "FAILED", s.refinement_rounds,
+          s.refined_seeds);
     if (s.windows > 0)
       log.info(
           "voronoi: surface {}: {} seeds finer than the grid grown in {} windows; then the dual "
@@ -199,7 +209,7 @@ Stage voronoi_stage() {
   t.add(
       "lloyd", [](O& o) -> int& { return o.mesher.lloyd.iterations; },
       integer(0, 100, {{"auto", kAutoIterations}}),
-      "Lloyd iterations on the auto seeds (auto: 30 on exact cells, 10 on grown ones): each "
+      "Lloyd iterations on the auto seeds (auto: 15 on exact cells, 10 on grown ones): each "
       "interior seed but the first front row "
       "moves to the metric centroid of its region (0: none)");
   t.add(
@@ -207,7 +217,14 @@ Stage voronoi_stage() {
       one_of({"auto", "exact", "grown"}),
       "the regions Lloyd's centroids are taken of | exact: the seeds' Euclidean Voronoi cells "
       "(CGAL), weighted by sqrt(det M) M, no grid | grown: the crystals grown on the grid | "
-      "auto: exact where the metric is isotropic at every seed, else grown");
+      "auto: exact where the metric is isotropic everywhere, else grown");
+  t.add(
+      "dual", [](O& o) -> std::string& { return o.mesher.dual; },
+      one_of({"auto", "exact", "grown"}),
+      "the triangulation of the seeds | grown: dual to the crystals grown on the grid "
+      "(thesis Ch 2) | exact: their Delaunay triangulation (CGAL), dual to their Euclidean "
+      "Voronoi cells, no grid | auto: exact where the metric is isotropic everywhere, "
+      "else grown");
   t.add(
       "smooth", [](O& o) -> int& { return o.mesher.smooth; }, integer(0, 100),
       "sweeps of smart smoothing of the interior nodes after the dual (Laplacian or "

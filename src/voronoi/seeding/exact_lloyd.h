@@ -24,9 +24,10 @@
 
 namespace homesh {
 
-/// The largest ratio of a metric's semi-axes over the points (2 by n):
-/// 1 for an isotropic metric.
-double largest_anisotropy(const MetricField& metric, const Eigen::Matrix2Xd& points);
+/// The largest ratio of a metric's semi-axes anywhere: over the nodes of its
+/// coarse grid (a Shepard average of isotropic tensors is isotropic); 1 for
+/// an isotropic metric.
+double largest_anisotropy(const MetricField& metric);
 
 /// Seeds 0..fixed-1 stay, and so does every seed s with held[s] != 0 (held
 /// empty or one flag per seed); the others move to the centroids above,
