@@ -24,16 +24,32 @@ std::vector<Star> stars(Eigen::Index n, const Eigen::MatrixXi& tri) {
   return star;
 }
 
+// The same metric for every triangle of a star: its determinant's root
+// taken once (metric_mean_ratio's value, to the last bit: the same products
+// in the same order).
+struct StarMetric {
+  Eigen::Matrix2d M;
+  double root_det;
+  explicit StarMetric(const Eigen::Matrix2d& m) : M(m), root_det(std::sqrt(m.determinant())) {}
+  double mean_ratio(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                    const Eigen::Vector2d& c) const {
+    const Eigen::Vector2d u = b - a, v = c - a, w = c - b;
+    const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
+    const double edges = u.dot(M * u) + v.dot(M * v) + w.dot(M * w);
+    return edges > 0.0 ? 4.0 * std::sqrt(3.0) * area * root_det / edges : 0.0;
+  }
+};
+
 // Worst quality of a node's triangles with the node at p, and the sum of
 // their inverse qualities (infinite once one folds or degenerates).
 struct Patch {
   double worst, inverse;
 };
 Patch patch(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Vector2d& p,
-            const Eigen::Matrix2d& M) {
+            const StarMetric& M) {
   Patch out{std::numeric_limits<double>::infinity(), 0.0};
   for (const auto& [a, b] : s) {
-    const double q = metric_mean_ratio(p, x.col(a), x.col(b), M);
+    const double q = M.mean_ratio(p, x.col(a), x.col(b));
     out.worst = std::min(out.worst, q);
     out.inverse += q > 0.0 ? 1.0 / q : std::numeric_limits<double>::infinity();
   }
@@ -44,14 +60,18 @@ Patch patch(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Vector2d& p,
 // far, h halved on failure, until h is kSearchTolerance of the first or
 // kSearchSteps halvings.
 template <class Better>
-void compass(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Matrix2d& M, double h,
+void compass(const Eigen::Matrix2Xd& x, const Star& s, const StarMetric& M, double h,
              Eigen::Vector2d& to, Patch& best, Better better) {
+  static const std::array<Eigen::Vector2d, 8> direction = [] {
+    std::array<Eigen::Vector2d, 8> out;
+    for (int d = 0; d < 8; ++d) out[d] = {std::cos(M_PI * d / 4), std::sin(M_PI * d / 4)};
+    return out;
+  }();
   const double stop = h * kSearchTolerance;
   for (int k = 0; k < kSearchSteps && h > stop; ++k) {
     bool moved = false;
     for (int d = 0; d < 8; ++d) {
-      const Eigen::Vector2d c =
-          to + h * Eigen::Vector2d(std::cos(M_PI * d / 4), std::sin(M_PI * d / 4));
+      const Eigen::Vector2d c = to + h * direction[d];
       const Patch q = patch(x, s, c, M);
       if (better(q, best)) {
         best = q;
@@ -99,7 +119,8 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       }
       laplace /= static_cast<double>(s.size());
       apex /= static_cast<double>(s.size());
-      Patch best = patch(x, s, p, M);
+      const StarMetric star_metric(M);
+      Patch best = patch(x, s, p, star_metric);
       // No worse worst triangle, and a smaller sum of inverse qualities.
       const auto smaller_sum = [](double floor) {
         return [floor](const Patch& q, const Patch& b) {
@@ -108,7 +129,7 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       };
       Eigen::Vector2d to = p;
       for (const Eigen::Vector2d& c : {laplace, apex}) {
-        const Patch q = patch(x, s, c, M);
+        const Patch q = patch(x, s, c, star_metric);
         if (smaller_sum(best.worst)(q, best)) {
           best = q;
           to = c;
@@ -116,11 +137,11 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       }
       const double h = 0.25 * std::sqrt((x.col(s.front()[0]) - p).squaredNorm());
       // Where the worst triangle stays poor, raise it first.
-      if (best.worst < kPoor) compass(x, s, M, h, to, best, raises_worst);
+      if (best.worst < kPoor) compass(x, s, star_metric, h, to, best, raises_worst);
       // Then the sum of inverse qualities (Knupp's inverse mean ratio), the
       // worst triangle kept no worse: the star's optimum, where the fixed
       // candidates above only come near it.
-      compass(x, s, M, h, to, best, smaller_sum(best.worst));
+      compass(x, s, star_metric, h, to, best, smaller_sum(best.worst));
       if (to != p) {
         x.col(v) = to;
         ++moves;
@@ -137,13 +158,20 @@ int raise_worst_triangle(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
     const Eigen::Vector2d a = x.col(tri(0, t)), b = x.col(tri(1, t)), c = x.col(tri(2, t));
     return metric_mean_ratio(a, b, c, metric.metric_at((a + b + c) / 3));
   };
+  // Each triangle's quality, kept up to date as its corners move.
+  std::vector<std::vector<Eigen::Index>> node_triangles(static_cast<std::size_t>(x.cols()));
+  std::vector<double> q(static_cast<std::size_t>(tri.cols()));
+  for (Eigen::Index t = 0; t < tri.cols(); ++t) {
+    q[t] = quality(t);
+    for (int k = 0; k < 3; ++k) node_triangles[tri(k, t)].push_back(t);
+  }
   int steps = 0;
   for (; steps < max_steps; ++steps) {
     Eigen::Index worst = 0;
     double q_worst = std::numeric_limits<double>::infinity();
     for (Eigen::Index t = 0; t < tri.cols(); ++t)
-      if (const double q = quality(t); q < q_worst) {
-        q_worst = q;
+      if (q[t] < q_worst) {
+        q_worst = q[t];
         worst = t;
       }
     bool moved = false;
@@ -151,12 +179,13 @@ int raise_worst_triangle(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       const int v = tri(k, worst);
       if (!free_node[v]) continue;
       const Eigen::Vector2d p = x.col(v);
-      const Eigen::Matrix2d M = metric.metric_at(p);
+      const StarMetric M(metric.metric_at(p));
       Patch best = patch(x, star[v], p, M);
       Eigen::Vector2d to = p;
       compass(x, star[v], M, 0.25 * (x.col(star[v].front()[0]) - p).norm(), to, best, raises_worst);
       if (to != p) {
         x.col(v) = to;
+        for (const Eigen::Index t : node_triangles[v]) q[t] = quality(t);
         moved = true;
       }
     }
