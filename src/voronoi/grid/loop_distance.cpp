@@ -22,6 +22,31 @@ void for_each_edge(const std::vector<Eigen::Matrix2Xd>& loops, F&& f) {
       f(Eigen::Vector2d(loop.col(k)), Eigen::Vector2d(loop.col((k + 1) % loop.cols())));
 }
 
+constexpr double kChordTolerance = 0.01;  // decimated polygons: within this many cells
+constexpr int kChordSamples = 64;         // ... of every sample a chord skips, at most this many
+
+// The loops with every sample dropped that a chord from the last sample kept
+// passes within `tol` of (with those before it), at most kChordSamples in a
+// row: the band's distances then cost per grid cell of the boundary, not per
+// sample (2000 per CAD curve, where the grid may have 20 cells along it).
+std::vector<Eigen::Matrix2Xd> decimated(const std::vector<Eigen::Matrix2Xd>& loops, double tol) {
+  std::vector<Eigen::Matrix2Xd> out;
+  for (const Eigen::Matrix2Xd& loop : loops) {
+    std::vector<Eigen::Index> kept{0};
+    const Eigen::Index n = loop.cols();
+    for (Eigen::Index j = 2; j < n; ++j) {
+      const Eigen::Index a = kept.back();
+      bool close = j - a <= kChordSamples;
+      for (Eigen::Index k = a + 1; close && k < j; ++k)
+        close = segment_distance(loop.col(k), loop.col(a), loop.col(j)) <= tol;
+      if (!close) kept.push_back(j - 1);
+    }
+    if (n > 1) kept.push_back(n - 1);
+    out.emplace_back(loop(Eigen::all, kept));
+  }
+  return out;
+}
+
 }  // namespace
 
 bool inside_loops(const std::vector<Eigen::Matrix2Xd>& loops, const Eigen::Vector2d& p) {
@@ -37,11 +62,12 @@ bool inside_loops(const std::vector<Eigen::Matrix2Xd>& loops, const Eigen::Vecto
 Eigen::VectorXd loop_signed_distance(const CartesianGrid& g,
                                      const std::vector<Eigen::Matrix2Xd>& loops, double band) {
   Eigen::VectorXd dist = Eigen::VectorXd::Constant(g.node_count(), band);
+  const std::vector<Eigen::Matrix2Xd> coarse = decimated(loops, kChordTolerance * g.ds());
   const auto clamp_i = [&](double v) { return std::clamp(static_cast<int>(v), 0, g.nx - 1); };
   const auto clamp_j = [&](double v) { return std::clamp(static_cast<int>(v), 0, g.ny - 1); };
   // Crossings of each grid row with the polygon edges (half-open in y).
   std::vector<std::vector<double>> crossings(g.ny);
-  for_each_edge(loops, [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  for_each_edge(coarse, [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     const Eigen::Vector2d lo = a.cwiseMin(b).array() - band, hi = a.cwiseMax(b).array() + band;
     const int i0 = clamp_i(std::floor((lo.x() - g.origin.x()) / g.dx));
     const int i1 = clamp_i(std::ceil((hi.x() - g.origin.x()) / g.dx));

@@ -37,6 +37,7 @@ TEST_CASE("signed distance of an annulus from its two sampled circles", "[vorono
         CHECK(got == (exact > 0 ? band : -band));
       if (std::abs(exact) > 1e-3) CHECK(inside_loops(loops, g.point(i, j)) == (exact < 0));
     }
-  // Chords of 2000 and 800 sides sag by r (1 - cos(pi / n)) < 2e-6.
-  CHECK(worst < 1e-5);
+  // Chords of 2000 and 800 sides sag by r (1 - cos(pi / n)) < 2e-6; the
+  // decimated chords pass within 0.01 cells (2e-4) of the samples they skip.
+  CHECK(worst < 0.01 * g.ds() + 1e-5);
 }
