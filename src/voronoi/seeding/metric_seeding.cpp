@@ -36,24 +36,48 @@ struct DomainTest {
   // domain, tested at 16 points of its boundary: the metric distance to the
   // boundary is >= r.
   bool ball_inside(const Eigen::Vector2d& q, const Eigen::Matrix2d& root_inv, double r) const {
+    static const std::array<Eigen::Vector2d, 16> direction = [] {
+      std::array<Eigen::Vector2d, 16> out;
+      for (int k = 0; k < 16; ++k) {
+        const double a = M_PI * k / 8;
+        out[k] = {std::cos(a), std::sin(a)};
+      }
+      return out;
+    }();
     if (at(q) >= 0.0) return false;
-    for (int k = 0; k < 16; ++k) {
-      const double a = M_PI * k / 8;
-      if (at(q + r * (root_inv * Eigen::Vector2d(std::cos(a), std::sin(a)))) >= 0.0) return false;
-    }
+    for (const Eigen::Vector2d& d : direction)
+      if (at(q + r * (root_inv * d)) >= 0.0) return false;
     return true;
   }
 };
 
-// Whether q is at least `spacing` (metric length, mean of the two points'
-// metrics, Mq at q) from every point in the buckets.
-bool spaced_from(const PointBuckets& buckets, const MetricField& metric, const Eigen::Vector2d& q,
-                 const Eigen::Matrix2d& Mq, double spacing, double reach) {
-  return buckets.all_of_near(q, reach, [&](const Eigen::Vector2d& p) {
-    const Eigen::Vector2d v = q - p;
-    return v.dot(0.5 * (Mq + metric.metric_at(p)) * v) >= spacing * spacing;
-  });
-}
+// Seeds in buckets with the metric at each, taken once: the spacing test
+// meets each seed many times.
+class SpacedSeeds {
+ public:
+  SpacedSeeds(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double cell,
+              const MetricField& metric)
+      : buckets_(lo, hi, cell), metric_(metric) {}
+  void add(const Eigen::Vector2d& p) { add(p, metric_.metric_at(p)); }
+  void add(const Eigen::Vector2d& p, const Eigen::Matrix2d& Mp) {
+    buckets_.add(p);
+    M_.push_back(Mp);
+  }
+  // Whether q is at least `spacing` (metric length, mean of the two points'
+  // metrics, Mq at q) from every seed within `reach`.
+  bool spaced(const Eigen::Vector2d& q, const Eigen::Matrix2d& Mq, double spacing,
+              double reach) const {
+    return buckets_.all_of_near_index(q, reach, [&](int k) {
+      const Eigen::Vector2d v = q - buckets_.points()[k];
+      return v.dot(0.5 * (Mq + M_[k]) * v) >= spacing * spacing;
+    });
+  }
+
+ private:
+  PointBuckets buckets_;
+  const MetricField& metric_;
+  std::vector<Eigen::Matrix2d> M_;
+};
 
 }  // namespace
 
@@ -65,8 +89,8 @@ FrontSeeds metric_front_seeds(const CartesianGrid& g, const Eigen::VectorXd& dom
   const Eigen::Vector2d lo = g.origin;
   const Eigen::Vector2d hi = g.point(g.nx - 1, g.ny - 1);
   const DomainTest test{g, domain};
-  PointBuckets buckets(lo, hi,
-                       std::max(metric.min_speed() * o.front_spacing, 1e-9 * (hi - lo).norm()));
+  SpacedSeeds buckets(
+      lo, hi, std::max(metric.min_speed() * o.front_spacing, 1e-9 * (hi - lo).norm()), metric);
   for (Eigen::Index k = 0; k < boundary_seeds.cols(); ++k) buckets.add(boundary_seeds.col(k));
   const double equilateral = std::sqrt(3.0) / 2;
   // Keeps q if its metric ball of radius gap lies in the domain and it is
@@ -76,10 +100,9 @@ FrontSeeds metric_front_seeds(const CartesianGrid& g, const Eigen::VectorXd& dom
     const Eigen::Matrix2d root_inv =
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(Mq).operatorInverseSqrt();
     const double reach = 2.0 * o.front_spacing * metric_max_speed(Mq);
-    if (!test.ball_inside(q, root_inv, gap) ||
-        !spaced_from(buckets, metric, q, Mq, o.front_spacing, reach))
+    if (!test.ball_inside(q, root_inv, gap) || !buckets.spaced(q, Mq, o.front_spacing, reach))
       return false;
-    buckets.add(q);
+    buckets.add(q, Mq);
     return true;
   };
   // The apex of (a, b), if it is kept.
@@ -200,7 +223,7 @@ Eigen::Matrix2Xd metric_interior_seeds(const CartesianGrid& g, const Eigen::Vect
   // searched within spacing (1 + annulus) times twice the local largest
   // semi-axis (a graded metric changes by less than 2 over that distance).
   double h_min = metric.min_speed();
-  PointBuckets buckets(lo, hi, std::max(h_min * o.spacing, 1e-9 * (hi - lo).norm()));
+  SpacedSeeds buckets(lo, hi, std::max(h_min * o.spacing, 1e-9 * (hi - lo).norm()), metric);
   std::vector<Eigen::Vector2d> active;
   for (int k = 0; k < boundary_seeds.cols(); ++k) {
     buckets.add(boundary_seeds.col(k));
@@ -214,9 +237,9 @@ Eigen::Matrix2Xd metric_interior_seeds(const CartesianGrid& g, const Eigen::Vect
     const Eigen::Matrix2d Mq = metric.metric_at(q);
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(Mq);
     const double reach = 2.0 * o.spacing * (1 + o.annulus) / std::sqrt(eig.eigenvalues()(0));
-    if (!spaced_from(buckets, metric, q, Mq, o.spacing, reach)) return false;
+    if (!buckets.spaced(q, Mq, o.spacing, reach)) return false;
     if (!test.ball_inside(q, eig.operatorInverseSqrt(), o.boundary_gap)) return false;
-    buckets.add(q);
+    buckets.add(q, Mq);
     active.push_back(q);
     interior.push_back(q);
     return true;
