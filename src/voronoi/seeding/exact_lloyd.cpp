@@ -39,6 +39,7 @@ Eigen::Matrix2Xd exact_lloyd(Eigen::Matrix2Xd seeds, int fixed, const MetricFiel
     const VoronoiCells cells = cgal_voronoi_cells(seeds);
     Eigen::Matrix2Xd next = seeds;
     double largest_move = 0.0;
+    std::vector<double> area;  // of a cell's fan triangles
     for (Eigen::Index s = fixed; s < S; ++s) {
       const std::vector<Eigen::Vector2d>& cell = cells.vertices[s];
       if ((!held.empty() && held[s]) || cell.empty()) continue;
@@ -56,18 +57,27 @@ Eigen::Matrix2Xd exact_lloyd(Eigen::Matrix2Xd seeds, int fixed, const MetricFiel
         A += W;
         b += W * m;
       };
-      for (std::size_t k = 0; k < cell.size(); ++k) {
-        const Eigen::Vector2d& u = cell[k];
-        const Eigen::Vector2d& v = cell[(k + 1) % cell.size()];
-        const Eigen::Vector2d e = u - p, f = v - p;
-        const double area = std::abs(e.x() * f.y() - e.y() * f.x()) / 2.0;
-        if (!clipped) {
-          add(0.5 * (p + u), area / 3);
-          add(0.5 * (u + v), area / 3);
-          add(0.5 * (v + p), area / 3);
-          continue;
+      const std::size_t m = cell.size();
+      if (!clipped) {
+        // The edge-midpoint rule on each fan triangle (p, u_k, u_k+1): the
+        // midpoint of spoke (p, u_k) is shared by the triangles on its two
+        // sides and taken once, with a third of both their areas.
+        area.resize(m);
+        for (std::size_t k = 0; k < m; ++k) {
+          const Eigen::Vector2d e = cell[k] - p, f = cell[(k + 1) % m] - p;
+          area[k] = std::abs(e.x() * f.y() - e.y() * f.x()) / 2.0;
         }
-        const double sub = area / (kSplit * kSplit);
+        for (std::size_t k = 0; k < m; ++k) {
+          add(0.5 * (p + cell[k]), (area[(k + m - 1) % m] + area[k]) / 3);
+          add(0.5 * (cell[k] + cell[(k + 1) % m]), area[k] / 3);
+        }
+      }
+      for (std::size_t k = 0; clipped && k < m; ++k) {
+        const Eigen::Vector2d& u = cell[k];
+        const Eigen::Vector2d& v = cell[(k + 1) % m];
+        const Eigen::Vector2d e = u - p, f = v - p;
+        const double fan_area = std::abs(e.x() * f.y() - e.y() * f.x()) / 2.0;
+        const double sub = fan_area / (kSplit * kSplit);
         for (int i = 0; i < kSplit; ++i)
           for (int j = 0; i + j < kSplit; ++j) {
             // The upright sub-triangle at (i, j) and, but on the diagonal, the
