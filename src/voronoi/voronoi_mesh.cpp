@@ -13,6 +13,7 @@
 #include "core/progress.h"
 #include "layers/edge_flips.h"
 #include "voronoi/cleanup/metric_smoothing.h"
+#include "voronoi/cleanup/valence_flips.h"
 #include "voronoi/cleanup/valence_four.h"
 #include "voronoi/cleanup/valence_three.h"
 #include "voronoi/dual/cgal_constrained_delaunay.h"
@@ -37,6 +38,13 @@ constexpr double kSeedCellsPerSize = 2.0;
 constexpr int kGridMin = 200, kGridMax = 1500;
 constexpr double kBandCells = 8.0;   // the domain's distance is exact this many cells out
 constexpr int kLloydCoarsening = 2;  // Lloyd's iteration on a grid this many times coarser
+// Valence flips (valence_flips.h) make no triangle worse than this (or than
+// the worse of the two they replace). On the corpus (3 Dec 2026, after the
+// smoothing) 0.7 raised the mean ICN on 39 of 41 models (median +0.001) and
+// the worst on 28, lowering it on 10 by at most 0.008; 0.6 lowered the worst
+// on 18 models by up to 0.089, 0.8 left almost no flip; flipping before the
+// smoothing instead lowered the worst by up to 0.077.
+constexpr double kValenceFloor = 0.7;
 // Automatic growth grid: sized for all but this share of the seeds (by the
 // metric's smallest size at them), windows round the finer ones
 // (window_regrowth.h); the seeding grid alone is sized for the finest.
@@ -565,6 +573,15 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
       if (!gone.empty()) {
         drop_nodes(m, gone);
         free_node = interior_nodes(m.node_class);
+        rep.smoothing_moves += smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
+        rep.flips += flip_edges(m, metric_mean_ratio);
+      }
+    }
+    // Edges flipped towards valence 6 (valence_flips.h), on the smoothed
+    // positions, the rest smoothed and flipped again round them.
+    if (o.cleanup) {
+      rep.valence_flips = flip_to_regular_valence(m, free_node, metric_mean_ratio, kValenceFloor);
+      if (rep.valence_flips > 0) {
         rep.smoothing_moves += smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
         rep.flips += flip_edges(m, metric_mean_ratio);
       }

@@ -31,7 +31,9 @@ struct VoronoiMeshOptions {
   int raise_worst = 100;
   /// Topological clean-up of the dual: interior nodes of three triangles
   /// removed (voronoi/cleanup/valence_three.h), edges flipped where that raises the
-  /// worst mean ratio (Q11) in the metric, after the smoothing.
+  /// worst mean ratio (Q11) in the metric, after the smoothing; interior nodes
+  /// of four triangles removed where their quad is better without them
+  /// (valence_four.h); edges flipped towards valence 6 (valence_flips.h).
   bool cleanup = true;
   /// The triangulation the clean-up starts from | grown: the dual of the
   /// crystals grown on the grid (thesis Ch 2) | exact: the Delaunay
@@ -40,7 +42,10 @@ struct VoronoiMeshOptions {
   /// exact where the metric is isotropic everywhere, else grown.
   std::string dual = "auto";
   std::string engine = "fast_marching";  ///< a name of voronoi_engines()
-  int grid = 0;  ///< grid nodes along a surface's longer side; 0: its smallest size over 6 cells
+  /// Grid nodes along a surface's longer side; 0: its smallest size over 6
+  /// cells for the grown dual, over 2 for the exact one (whose grid serves only
+  /// the seeds' inside tests), 200 to 1500 nodes.
+  int grid = 0;
   /// With grid = 0: the crystals grow on a grid sized for all but the finer
   /// half of the seeds, and again on finer grids in windows round those
   /// (window_regrowth.h), where one grid for the finest spot of a far field
@@ -85,6 +90,7 @@ struct VoronoiReport {
   int smoothing_moves = 0;
   int valence_three = 0;  ///< interior nodes of three triangles removed
   int valence_four = 0;   ///< interior nodes of four triangles removed (valence_four.h)
+  int valence_flips = 0;  ///< edges flipped towards valence 6 (valence_flips.h)
   int flips = 0;          ///< edges flipped
   int raise_steps = 0;    ///< steps raising the worst triangle (raise_worst_triangle)
 };

@@ -93,8 +93,8 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
   if (o.mesher.cleanup)
     log.info(
         "voronoi: clean-up: {} interior nodes of three triangles removed, {} of four (where "
-        "their quad is better without them), {} edges flipped",
-        rep.valence_three, rep.valence_four, rep.flips);
+        "their quad is better without them), {} edges flipped, {} of them towards valence 6",
+        rep.valence_three, rep.valence_four, rep.flips + rep.valence_flips, rep.valence_flips);
   if (o.mesher.smooth > 0)
     log.info(
         "voronoi: {} smoothing sweeps of the interior nodes, {} moves; {} steps raising the "
@@ -241,9 +241,10 @@ Stage voronoi_stage() {
       "cleanup", [](O& o) -> bool& { return o.mesher.cleanup; }, boolean(),
       "topological clean-up of the dual: interior nodes of only three triangles removed (their "
       "triangles merged), edges flipped where the other diagonal raises the worst mean ratio "
-      "in the metric (Q11), after the smoothing, and interior nodes of four triangles removed "
-      "where the better split of their quad raises the worst of the four | off: the dual's "
-      "connectivity");
+      "in the metric (Q11), after the smoothing, interior nodes of four triangles removed "
+      "where the better split of their quad raises the worst of the four, and edges flipped "
+      "where that brings the valences nearer 6 with no triangle below 0.7 (Frey and Field's "
+      "relaxation) | off: the dual's connectivity");
   t.add(
       "engine", [](O& o) -> std::string& { return o.mesher.engine; }, one_of(engines),
       names_text(engines));
@@ -252,15 +253,20 @@ Stage voronoi_stage() {
       where<int>(
           integer(0, 20000), [](const int& n) { return n == 0 || n >= 32; },
           "must be 0 (automatic) or at least 32"),
-      "grid nodes along the longer side (0: automatic, see windows)");
+      "grid nodes along the longer side (0: automatic: with the exact dual, where the grid "
+      "serves only the seeds' inside tests, 2 cells per smallest size; with the grown one, "
+      "see windows)");
   t.add(
       "windows", [](O& o) -> bool& { return o.mesher.fine_windows; }, boolean(),
-      "with grid=0: the crystals grow on a grid of 6 cells per size for half the seeds, 200 to "
+      "with grid=0 and the grown dual: the crystals grow on a grid of 6 cells per size for "
+      "half the seeds, 200 to "
       "1500 nodes along the longer side, and in windows round the finer seeds on grids of "
       "their own (Lloyd's iteration too) | off: on one grid of 6 cells per smallest size");
   return make_stage<O>("voronoi",
-                       "new linear triangle mesh of the input's CAD, dual to the crystal Voronoi "
-                       "diagram (thesis Ch 2; replaces any mesh)",
+                       "new linear triangle mesh of the input's CAD, dual to the Voronoi diagram "
+                       "of seeds placed in the metric: exact (their Delaunay triangulation) where "
+                       "the metric is isotropic, crystal growth (thesis Ch 2) where it is not "
+                       "(replaces any mesh)",
                        t, run, true, true);
 }
 
