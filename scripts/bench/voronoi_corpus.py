@@ -28,7 +28,6 @@ triangles, ICN min / mean, seconds, and voronoi's time over frontal's.
 import argparse
 import csv
 import fnmatch
-import multiprocessing as mp
 import os
 import sys
 import time
@@ -90,17 +89,8 @@ def child(conn, name, method):
 
 
 def run_one(name, method, timeout):
-    ctx = mp.get_context("fork")
-    here, there = ctx.Pipe(duplex=False)
-    proc = ctx.Process(target=child, args=(there, name, method))
-    proc.start()
-    if here.poll(timeout):
-        row = here.recv()
-        proc.join()
-        return row
-    proc.kill()
-    proc.join()
-    return dict(case=name, method=method, status="timeout")
+    return corpus.in_child(child, (name, method), timeout,
+                           dict(case=name, method=method, status="timeout"))
 
 
 def main():
@@ -123,11 +113,7 @@ def main():
     rows = []
     for c in cases:
         for m in methods:
-            r = run_one(c.name, m, args.timeout)
-            for _ in range(args.repeat - 1):
-                again = run_one(c.name, m, args.timeout)
-                if r["status"] == "ok" and again["status"] == "ok":
-                    r["seconds"] = min(r["seconds"], again["seconds"])
+            r = corpus.least_time(lambda: run_one(c.name, m, args.timeout), args.repeat)
             rows.append(r)
             if r["status"] == "ok":
                 print(f"{c.name:28s} {m:20s} {r['triangles']:6d} tri  ICN min {r['icn_min']:.4f}"

@@ -20,7 +20,6 @@ prints the table.
 """
 import argparse
 import csv
-import multiprocessing as mp
 import os
 import sys
 import time
@@ -29,6 +28,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
+import corpus  # noqa: E402
 from gmsh_referee import icn  # noqa: E402
 
 # Each model's factors: from about 1e3 triangles to about 1e5 (and 2e5).
@@ -64,17 +64,8 @@ def child(conn, model, factor, method):
 
 
 def run_one(model, factor, method, timeout=600):
-    ctx = mp.get_context("fork")
-    here, there = ctx.Pipe(duplex=False)
-    proc = ctx.Process(target=child, args=(there, model, factor, method))
-    proc.start()
-    if here.poll(timeout):
-        row = here.recv()
-        proc.join()
-        return row
-    proc.kill()
-    proc.join()
-    return dict(model=model, factor=factor, method=method, status="timeout")
+    return corpus.in_child(child, (model, factor, method), timeout,
+                           dict(model=model, factor=factor, method=method, status="timeout"))
 
 
 def plot(rows, path):
@@ -117,11 +108,7 @@ def main():
             factors = [float(f) for f in args.factors.split(",")]
         for factor in factors:
             for method in METHODS:
-                r = run_one(model, factor, method)
-                for _ in range(args.repeat - 1):
-                    again = run_one(model, factor, method)
-                    if r["status"] == "ok" and again["status"] == "ok":
-                        r["seconds"] = min(r["seconds"], again["seconds"])
+                r = corpus.least_time(lambda: run_one(model, factor, method), args.repeat)
                 rows.append(r)
                 if r["status"] == "ok":
                     print(f"{model:12s} {factor:7.3g} {method:14s} {r['triangles']:9d} "
