@@ -121,6 +121,16 @@ def least_time(run, repeat):
     return row
 
 
+def write_rows(path, fields, rows):
+    """rows (dicts) as a CSV with the columns `fields`, written to a temporary file and renamed
+    (a stopped run never leaves half a file)."""
+    with open(path + ".tmp", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(path + ".tmp", path)
+
+
 def naca_section(code):
     """(t, camber) of a NACA 4-digit (MPTT) or 5-digit (LPQTT, non-reflexed Q = 0) section:
     t the thickness over chord, camber(x) -> (yc, dyc/dx) on x in [0, 1]."""

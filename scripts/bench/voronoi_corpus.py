@@ -26,7 +26,6 @@ Writes OUT/voronoi_corpus.csv and OUT/voronoi_corpus.png, and prints a table per
 triangles, ICN min / mean, seconds, and voronoi's time over frontal's.
 """
 import argparse
-import csv
 import fnmatch
 import os
 import sys
@@ -123,11 +122,7 @@ def main():
             else:
                 print(f"{c.name:28s} {m:20s} {r['status']}: {r.get('error', '')}", flush=True)
     path = os.path.join(args.out, "voronoi_corpus.csv")
-    with open(path + ".tmp", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=FIELDS)
-        w.writeheader()
-        w.writerows(rows)
-    os.replace(path + ".tmp", path)
+    corpus.write_rows(path, FIELDS, rows)
     summary(rows, [c.name for c in cases])
     plot(rows, [c.name for c in cases], methods, os.path.join(args.out, "voronoi_corpus.png"))
     print(f"wrote {path}")

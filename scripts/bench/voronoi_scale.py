@@ -19,7 +19,6 @@ Writes OUT/voronoi_scale.csv and OUT/voronoi_scale.png (time ratio against trian
 prints the table.
 """
 import argparse
-import csv
 import os
 import sys
 import time
@@ -118,11 +117,7 @@ def main():
                     print(f"{model:12s} {factor:7.3g} {method:14s} {r['status']}: "
                           f"{r.get('error', '')}", flush=True)
     path = os.path.join(args.out, "voronoi_scale.csv")
-    with open(path + ".tmp", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=FIELDS)
-        w.writeheader()
-        w.writerows(rows)
-    os.replace(path + ".tmp", path)
+    corpus.write_rows(path, FIELDS, rows)
     by = {(r["model"], r["factor"], r["method"]): r for r in rows if r["status"] == "ok"}
     print(f"\n{'model':12s} {'factor':>7s} {'triangles f/v':>15s} {'time v/f':>9s}")
     for (model, factor, method), v in by.items():
