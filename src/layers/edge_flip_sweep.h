@@ -13,6 +13,13 @@
 
 namespace homesh {
 
+/// 0, 1, ..., m.num_triangles() - 1: every triangle, for flip_edges_where.
+inline std::vector<int> all_triangles(const Mesh& m) {
+  std::vector<int> all(m.num_triangles());
+  for (int e = 0; e < m.num_triangles(); ++e) all[e] = e;
+  return all;
+}
+
 /// Sweeps the edges shared by two of `triangles` (distinct indices of m's
 /// triangles), triangles (a, b, c) and (b, a, d) of the same surface, the
 /// edge (a, b) no line element: where choose(a, b, c, d) returns true they

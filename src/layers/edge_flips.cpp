@@ -11,12 +11,6 @@
 namespace homesh {
 namespace {
 
-std::vector<int> all_triangles(const Mesh& m) {
-  std::vector<int> all(m.num_triangles());
-  for (int e = 0; e < m.num_triangles(); ++e) all[e] = e;
-  return all;
-}
-
 double plain_radius_ratio(const Eigen::Matrix<double, 2, 3>& X) { return radius_ratio(X); }
 
 // The flips with q(X) of counter-clockwise triangles X (a template: open_room

@@ -70,7 +70,7 @@ class OptionTable {
     return o;
   }
 
-  /// Key, default (shown from T{}) and help of every option, in table order.
+  /// Key, default (shown from T()) and help of every option, in table order.
   std::vector<OptionSpec> specs() const {
     std::vector<OptionSpec> out;
     T defaults = T();  // not T{}: GCC 12 warns falsely (maybe-uninitialized) on its strings

@@ -265,7 +265,7 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
                          const VoronoiMeshOptions& o, std::vector<char>& list_used,
                          VoronoiSurfaceReport& rep) {
   const double extent = (loops.hi - loops.lo).maxCoeff();
-  const bool isotropic = largest_anisotropy(metric) <= kIsotropic;
+  const bool isotropic = metric.anisotropy() <= kIsotropic;
   const bool exact_dual = o.dual == "exact" || (o.dual == "auto" && isotropic);
   // The exact dual needs the grid only for the seeds' inside tests.
   const double cells_per_size = exact_dual ? kSeedCellsPerSize : kCellsPerSize;

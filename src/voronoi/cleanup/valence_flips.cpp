@@ -36,9 +36,7 @@ int flip_to_regular_valence(Mesh& m, const std::vector<char>& interior,
     --valence[a], --valence[b], ++valence[c], ++valence[d];
     return true;
   };
-  std::vector<int> all(m.num_triangles());
-  for (int e = 0; e < m.num_triangles(); ++e) all[e] = e;
-  return flip_edges_where(m, all, regular, max_sweeps);
+  return flip_edges_where(m, all_triangles(m), regular, max_sweeps);
 }
 
 }  // namespace homesh

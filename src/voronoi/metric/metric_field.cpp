@@ -56,6 +56,7 @@ MetricField::MetricField(const CartesianGrid& coarse, std::vector<Eigen::Matrix2
     Minv_.push_back(m.inverse());
     max_speed_ = std::max(max_speed_, 1.0 / std::sqrt(lambda(0)));
     min_speed_ = std::min(min_speed_, 1.0 / std::sqrt(lambda(1)));
+    anisotropy_ = std::max(anisotropy_, std::sqrt(lambda(1) / lambda(0)));
     uniform_ = uniform_ && m == M_[0];
   }
 }

@@ -75,6 +75,10 @@ class MetricField {
   /// of 1/sqrt(lambda_min) and 1/sqrt(lambda_max).
   double max_speed() const { return max_speed_; }
   double min_speed() const { return min_speed_; }
+  /// The largest ratio of semi-axes sqrt(lambda_max / lambda_min) over the
+  /// nodes, and so anywhere (a Shepard average of isotropic tensors is
+  /// isotropic): 1 for an isotropic metric.
+  double anisotropy() const { return anisotropy_; }
   /// The same tensor at every coarse node.
   bool uniform() const { return uniform_; }
   /// The same tensors on the same grid.
@@ -86,6 +90,7 @@ class MetricField {
   std::vector<Eigen::Matrix2d> Minv_;
   double max_speed_ = 0.0;
   double min_speed_ = 0.0;
+  double anisotropy_ = 1.0;
   bool uniform_ = true;
 };
 

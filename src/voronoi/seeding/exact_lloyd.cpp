@@ -15,18 +15,6 @@ constexpr int kSplit = 6;        // a clipped cell's fan triangles: kSplit^2 sub
 
 }  // namespace
 
-double largest_anisotropy(const MetricField& metric) {
-  double worst = 1.0;
-  for (int k = 0; k < metric.coarse().node_count(); ++k) {
-    // The closed-form eigenvalues mean +- r of the symmetric 2 x 2 tensor.
-    const Eigen::Matrix2d& M = metric.metric(k);
-    const double mean = 0.5 * (M(0, 0) + M(1, 1));
-    const double r = std::hypot(0.5 * (M(0, 0) - M(1, 1)), M(0, 1));
-    worst = std::max(worst, std::sqrt((mean + r) / (mean - r)));
-  }
-  return worst;
-}
-
 Eigen::Matrix2Xd exact_lloyd(Eigen::Matrix2Xd seeds, int fixed, const MetricField& metric,
                              const std::function<double(const Eigen::Vector2d&)>& domain,
                              const LloydOptions& options, const std::vector<char>& held) {

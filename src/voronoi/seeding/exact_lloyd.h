@@ -24,11 +24,6 @@
 
 namespace homesh {
 
-/// The largest ratio of a metric's semi-axes anywhere: over the nodes of its
-/// coarse grid (a Shepard average of isotropic tensors is isotropic); 1 for
-/// an isotropic metric.
-double largest_anisotropy(const MetricField& metric);
-
 /// Seeds 0..fixed-1 stay, and so does every seed s with held[s] != 0 (held
 /// empty or one flag per seed); the others move to the centroids above,
 /// options.iterations times (kExactIterations for kAutoIterations; Jacobi:
