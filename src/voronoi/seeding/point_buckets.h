@@ -15,10 +15,12 @@ namespace homesh {
 
 class PointBuckets {
  public:
-  /// Buckets over the box [lo, hi], the finest `cell` wide (> 0).
+  /// Buckets over the box [lo, hi], the finest `cell` wide (> 0), but at
+  /// most kMaxCells a side (a 100:1 metric's smallest size would otherwise ask
+  /// for 1e10 buckets; searches return the same points, from more buckets).
   PointBuckets(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double cell) : lo_(lo) {
     const double extent = std::max((hi - lo).maxCoeff(), cell);
-    for (double c = cell;; c *= 2) {
+    for (double c = std::max(cell, extent / kMaxCells);; c *= 2) {
       Level l;
       l.cell = c;
       l.nx = std::max(1, static_cast<int>(std::ceil((hi.x() - lo.x()) / c)));
@@ -68,6 +70,7 @@ class PointBuckets {
   int levels() const { return static_cast<int>(levels_.size()); }
 
  private:
+  static constexpr double kMaxCells = 1024;
   struct Level {
     double cell = 1;
     int nx = 1, ny = 1;

@@ -40,3 +40,16 @@ TEST_CASE("point buckets: a search finds every point within r, scanning about r 
   CHECK_FALSE(b.all_of_near({0, 0}, 1.0, [&](const Eigen::Vector2d&) { return ++calls < 3; }));
   CHECK(calls == 3);
 }
+
+TEST_CASE("point buckets: at most 1024 cells a side, however fine the cell asked for",
+          "[voronoi][seeding]") {
+  // A 100:1 metric's smallest size asked 1e10 buckets of the seeding's unit
+  // box: the finest level is 1 / 1024 wide, 11 levels up to the box.
+  PointBuckets b({0, 0}, {1, 1}, 1e-7);
+  CHECK(b.levels() == 11);
+  b.add({0.5, 0.5});
+  b.add({0.5 + 1e-6, 0.5});
+  int seen = 0;
+  b.all_of_near({0.5, 0.5}, 1e-7, [&](const Eigen::Vector2d&) { return ++seen > 0; });
+  CHECK(seen == 2);
+}
