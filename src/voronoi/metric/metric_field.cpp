@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "voronoi/metric/wall_layer.h"
 
 namespace homesh {
 namespace {
@@ -33,7 +34,16 @@ double metric_min_speed(const Eigen::Matrix2d& M) { return 1.0 / std::sqrt(eigen
 bool MetricField::operator==(const MetricField& o) const {
   const CartesianGrid &a = coarse_, &b = o.coarse_;
   return a.origin == b.origin && a.dx == b.dx && a.dy == b.dy && a.nx == b.nx && a.ny == b.ny &&
-         M_ == o.M_;
+         M_ == o.M_ && layer_ == o.layer_;
+}
+
+MetricField MetricField::with_layer(std::shared_ptr<const WallLayer> layer) const {
+  MetricField out = *this;
+  out.anisotropy_ = std::max(anisotropy_, layer->aspect());
+  out.min_speed_ = std::min(min_speed_, layer->iso().min_speed() / layer->aspect());
+  out.uniform_ = false;
+  out.layer_ = std::move(layer);
+  return out;
 }
 
 MetricField::MetricField(const CartesianGrid& coarse, std::vector<Eigen::Matrix2d> M)
@@ -98,6 +108,7 @@ double MetricField::stencil_speed(const ShepardStencil& s, const Eigen::Vector2d
 }
 
 Eigen::Matrix2d MetricField::metric_at(const Eigen::Vector2d& p) const {
+  if (layer_) return layer_->at(p);
   // stencil(p)'s weights 1/d_k^2, normalised, as products with a single
   // division: w_k = prod_{l != k} d_l^2 / sum_m prod_{l != m} d_l^2 (the
   // distances in units of dx, the weights being scale-free). The fast

@@ -19,11 +19,14 @@
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "voronoi/grid/cartesian_grid.h"
 
 namespace homesh {
+
+class WallLayer;  // voronoi/metric/wall_layer.h
 
 /// Eq 2.7: M = R^T diag(1/h1^2, 1/h2^2) R, R = [cos t, sin t; -sin t, cos t],
 /// whose unit ball is the ellipse with semi-axis h1 along the direction at angle
@@ -69,8 +72,15 @@ class MetricField {
   /// The same with the point's stencil given.
   double stencil_speed(const ShepardStencil& s, const Eigen::Vector2d& N) const;
   /// Shepard average of the corner metrics (used where a single tensor is
-  /// needed: the seed crystal's shape and the in-circle test of the dual).
+  /// needed: the seed crystal's shape and the in-circle test of the dual),
+  /// or, with a wall layer, its tensor at p itself.
   Eigen::Matrix2d metric_at(const Eigen::Vector2d& p) const;
+  /// The same field, its metric_at taken from `layer` (exact where the
+  /// coarse nodes cannot resolve a boundary layer; the nodes' tensors, which
+  /// the growth's speeds use, stay): the anisotropy and the smallest speed
+  /// become at least the layer's at its walls.
+  MetricField with_layer(std::shared_ptr<const WallLayer> layer) const;
+  const WallLayer* layer() const { return layer_.get(); }
   /// Largest and smallest speed any point can have: max / min over the nodes
   /// of 1/sqrt(lambda_min) and 1/sqrt(lambda_max).
   double max_speed() const { return max_speed_; }
@@ -92,6 +102,7 @@ class MetricField {
   double min_speed_ = 0.0;
   double anisotropy_ = 1.0;
   bool uniform_ = true;
+  std::shared_ptr<const WallLayer> layer_;
 };
 
 /// Extreme speeds 1/sqrt(lambda_min), 1/sqrt(lambda_max) of one SPD metric.

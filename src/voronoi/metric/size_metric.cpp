@@ -5,10 +5,12 @@
 #include <deque>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <queue>
 #include <string>
 
 #include "core/error.h"
+#include "voronoi/metric/wall_layer.h"
 
 namespace homesh {
 
@@ -132,7 +134,11 @@ MetricField boundary_layer_metric(const MetricField& iso,
     const Eigen::Vector2d t = tangents[nearest[n]];
     M[n] = metric_from_axes(std::atan2(t.y(), t.x()), h, hn);
   }
-  return MetricField(g, std::move(M));
+  // The same tensors at any point from its own distance (wall_layer.h): the
+  // coarse nodes lie too far apart for the first cells of a 100:1 layer.
+  MetricField out(g, std::move(M));
+  if (pts.empty()) return out;
+  return out.with_layer(std::make_shared<const WallLayer>(iso, walls, o.wall_aspect, o.thickness));
 }
 
 }  // namespace homesh

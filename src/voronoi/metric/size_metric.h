@@ -34,6 +34,9 @@ struct BoundaryLayerOptions {
 ///
 /// A = wall_aspect, T = thickness (M = R^T diag(1/h^2, 1/h_n^2) R, Eq 2.7).
 /// walls: polylines (2 by n each, n >= 2) finely sampled along the walls.
+/// The coarse nodes hold these tensors (the growth's speeds); metric_at
+/// gives them at the point itself (wall_layer.h), d its exact distance to the
+/// walls' segments.
 MetricField boundary_layer_metric(const MetricField& iso,
                                   const std::vector<Eigen::Matrix2Xd>& walls,
                                   const BoundaryLayerOptions& options = {});
