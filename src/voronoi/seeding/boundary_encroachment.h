@@ -10,10 +10,15 @@
 
 namespace homesh {
 
+class MetricField;
+
 /// seeds: 2 by S, of which 0..fixed-1 are the boundary seeds; segments: the
 /// boundary seed pairs. Returns the indices (>= fixed, increasing) of the
-/// seeds strictly inside the diametral circle of some segment.
+/// seeds strictly inside the diametral circle of some segment; with a
+/// metric, inside it in the metric at the segment's midpoint (the segment is
+/// then no edge of the seeds' Delaunay triangulation in that metric).
 std::vector<int> encroaching_seeds(const Eigen::Matrix2Xd& seeds, int fixed,
-                                   const std::vector<std::array<int, 2>>& segments);
+                                   const std::vector<std::array<int, 2>>& segments,
+                                   const MetricField* metric = nullptr);
 
 }  // namespace homesh

@@ -56,9 +56,9 @@ struct LloydOptions {
   double clearance_cells = 2.0;
   /// The regions the centroids are taken of: "grown" (the crystals on the
   /// grid, as below), "exact" (the seeds' Euclidean Voronoi cells,
-  /// exact_lloyd.h, weighted by the metric), or "auto": exact where the
-  /// metric is isotropic everywhere (its semi-axes within kIsotropic at
-  /// every node of its coarse grid), grown where it is not.
+  /// exact_lloyd.h, weighted by the metric), or "auto": exact with the exact
+  /// dual or where the metric is isotropic everywhere (its semi-axes within
+  /// kIsotropic at every node of its coarse grid), else grown.
   std::string cells = "auto";
   /// With exact cells: a centroid is taken only this many sizes inside the
   /// domain and from every neighbour.

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "voronoi/seeding/point_buckets.h"
+#include "voronoi/seeding/spaced_seeds.h"
 
 namespace homesh {
 namespace {
@@ -17,67 +17,6 @@ namespace {
 constexpr double kFrontLink = 1.6;  // front seeds this close in the metric stay one chain
 constexpr double kCornerMin = 75, kCornerMax = 140;  // corners that get a seed (degrees)
 constexpr double kCornerGap = 0.8;                   // and its gap to the walls, times boundary_gap
-
-// The domain's signed distance at a point (the grid box's when `domain` is
-// empty), and whether a metric ball lies inside.
-struct DomainTest {
-  const CartesianGrid& g;
-  const Eigen::VectorXd& domain;
-
-  double at(const Eigen::Vector2d& p) const {
-    if (domain.size() == 0) {
-      const Eigen::Vector2d hi = g.point(g.nx - 1, g.ny - 1);
-      return -std::min(
-          {p.x() - g.origin.x(), p.y() - g.origin.y(), hi.x() - p.x(), hi.y() - p.y()});
-    }
-    return bilinear_at(g, domain, p);
-  }
-  // The metric ball of radius r round q (root_inv = M^-1/2) inside the
-  // domain, tested at 16 points of its boundary: the metric distance to the
-  // boundary is >= r.
-  bool ball_inside(const Eigen::Vector2d& q, const Eigen::Matrix2d& root_inv, double r) const {
-    static const std::array<Eigen::Vector2d, 16> direction = [] {
-      std::array<Eigen::Vector2d, 16> out;
-      for (int k = 0; k < 16; ++k) {
-        const double a = M_PI * k / 8;
-        out[k] = {std::cos(a), std::sin(a)};
-      }
-      return out;
-    }();
-    if (at(q) >= 0.0) return false;
-    for (const Eigen::Vector2d& d : direction)
-      if (at(q + r * (root_inv * d)) >= 0.0) return false;
-    return true;
-  }
-};
-
-// Seeds in buckets with the metric at each, taken once: the spacing test
-// meets each seed many times.
-class SpacedSeeds {
- public:
-  SpacedSeeds(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double cell,
-              const MetricField& metric)
-      : buckets_(lo, hi, cell), metric_(metric) {}
-  void add(const Eigen::Vector2d& p) { add(p, metric_.metric_at(p)); }
-  void add(const Eigen::Vector2d& p, const Eigen::Matrix2d& Mp) {
-    buckets_.add(p);
-    M_.push_back(Mp);
-  }
-  // Whether q is at least `spacing` (metric length, mean of the two points'
-  // metrics, Mq at q) from every seed within `reach`.
-  bool spaced(const Eigen::Vector2d& q, const Eigen::Matrix2d& Mq, double spacing,
-              double reach) const {
-    return buckets_.all_of_near_index(q, reach, [&](int k) {
-      const Eigen::Vector2d v = q - buckets_.points()[k];
-      return v.dot(0.5 * (Mq + M_[k]) * v) >= spacing * spacing;
-    });
-  }
-
- private:
-  PointBuckets buckets_;
-  const MetricField& metric_;
-  std::vector<Eigen::Matrix2d> M_;
-};
 
 }  // namespace
 

@@ -36,7 +36,13 @@ struct SeedingOptions {
   int tries = 24;                  ///< candidates per seed before it retires
   double front_spacing = 0.75;     ///< smallest metric distance of a front seed to any other
   int front_rows = kAllFrontRows;  ///< rows of the advancing front (metric_front_seeds)
-  unsigned random_seed = 1;        ///< std::mt19937, so the seeds are reproducible
+  /// Columns across anisotropic walls (column_seeds.h): from the boundary
+  /// seeds where the metric is at least this anisotropic (ratio of its
+  /// semi-axes; 0: no columns) ...
+  double column_anisotropy = 2.0;
+  double column_end = 1.5;   ///< ... up to where it is less than this
+  double column_turn = 30;   ///< ... and where the wall turns by less (degrees)
+  unsigned random_seed = 1;  ///< std::mt19937, so the seeds are reproducible
 };
 
 /// grid and domain: as in VoronoiProblem (domain < 0 inside, a signed
