@@ -19,10 +19,12 @@
 #include "voronoi/dual/cgal_constrained_delaunay.h"
 #include "voronoi/dual/cgal_delaunay.h"
 #include "voronoi/dual/conforming_dual.h"
+#include "voronoi/dual/metric_delaunay.h"
 #include "voronoi/dual/refine_dual.h"
 #include "voronoi/dual/window_regrowth.h"
 #include "voronoi/grid/loop_distance.h"
 #include "voronoi/seeding/boundary_encroachment.h"
+#include "voronoi/seeding/column_seeds.h"
 #include "voronoi/seeding/exact_lloyd.h"
 
 namespace homesh {
@@ -137,17 +139,18 @@ SurfaceLoops surface_loops(const SeededBoundary& b, const SurfaceBoundary& s) {
   return out;
 }
 
-// One flag per node: 1 for an interior node (on a surface), which the
-// clean-up may move or remove.
-std::vector<char> interior_nodes(const std::vector<NodeClass>& node_class) {
-  std::vector<char> interior(node_class.size());
-  for (std::size_t k = 0; k < node_class.size(); ++k) interior[k] = node_class[k].dim == 2;
-  return interior;
+// One flag per node: 1 for an interior node (on a surface) not held (in a
+// column across an anisotropic wall), which the clean-up may move or remove.
+std::vector<char> free_nodes(const std::vector<NodeClass>& node_class,
+                             const std::vector<char>& held) {
+  std::vector<char> out(node_class.size());
+  for (std::size_t k = 0; k < node_class.size(); ++k) out[k] = node_class[k].dim == 2 && !held[k];
+  return out;
 }
 
 // Drops nodes `gone` (ascending; in no triangle, line or point) from m,
-// renumbering the others in order.
-void drop_nodes(Mesh& m, const std::vector<int>& gone) {
+// renumbering the others (and their flags `held`) in order.
+void drop_nodes(Mesh& m, const std::vector<int>& gone, std::vector<char>& held) {
   std::vector<int> to(m.x.cols(), -1);
   int count = 0;
   for (int k = 0, g = 0; k < static_cast<int>(to.size()); ++k)
@@ -157,11 +160,14 @@ void drop_nodes(Mesh& m, const std::vector<int>& gone) {
       to[k] = count++;
   Eigen::Matrix2Xd x(2, count);
   std::vector<NodeClass> node_class(count);
+  std::vector<char> kept(count);
   for (std::size_t k = 0; k < to.size(); ++k)
     if (to[k] >= 0) {
       x.col(to[k]) = m.x.col(static_cast<Eigen::Index>(k));
       node_class[to[k]] = m.node_class[k];
+      kept[to[k]] = held[k];
     }
+  held = std::move(kept);
   m.x = std::move(x);
   m.node_class = std::move(node_class);
   for (Eigen::MatrixXi* elements : {&m.tri, &m.line})
@@ -257,6 +263,7 @@ Eigen::Matrix2Xd file_seeds(const std::string& path, const SeedList& list, const
 struct SurfaceMesh {
   Eigen::Matrix2Xd seeds;  // the surface's boundary seeds first, then its interior ones
   std::vector<std::array<int, 3>> triangles;
+  std::vector<char> held = {};  // per seed: in a column (the clean-up leaves it)
 };
 
 // Thesis Ch 2 on one surface: seeds, growth, dual, regrowth, conforming fill.
@@ -266,14 +273,17 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
                          VoronoiSurfaceReport& rep) {
   const double extent = (loops.hi - loops.lo).maxCoeff();
   const bool isotropic = metric.anisotropy() <= kIsotropic;
-  const bool exact_dual = o.dual == "exact" || (o.dual == "auto" && isotropic);
-  // The exact dual needs the grid only for the seeds' inside tests.
+  const bool exact_dual = o.dual == "exact";
+  // The exact dual needs the grid only for the seeds' inside tests: sized by
+  // the smallest size along the walls (an anisotropic metric's columns go
+  // their first cells without the grid).
   const double cells_per_size = exact_dual ? kSeedCellsPerSize : kCellsPerSize;
-  const int n =
-      o.grid > 0
-          ? o.grid
-          : std::clamp(static_cast<int>(std::ceil(extent / (metric.min_speed() / cells_per_size))),
-                       kGridMin, kGridMax);
+  const double grid_size =
+      exact_dual ? metric.min_speed() * metric.anisotropy() : metric.min_speed();
+  const int n = o.grid > 0
+                    ? o.grid
+                    : std::clamp(static_cast<int>(std::ceil(extent / (grid_size / cells_per_size))),
+                                 kGridMin, kGridMax);
   VoronoiProblem p;
   p.grid = CartesianGrid::covering(loops.lo, loops.hi, n, 3);
   p.metric = metric;
@@ -285,15 +295,26 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   // Automatic seeds: the front rows advancing from the boundary segments,
   // then Poisson-disc seeds spaced from both where the fronts meet.
   const bool auto_seeds = o.seed_list == nullptr;
+  // Where the metric is anisotropic at the walls, columns across them first
+  // (column_seeds.h), then the rows where there are none.
+  const ColumnSeeds columns =
+      auto_seeds && !isotropic
+          ? metric_column_seeds(p.grid, p.domain, metric, bseeds, segments, o.seeding)
+          : ColumnSeeds{};
+  Eigen::Matrix2Xd walls(2, bseeds.cols() + columns.seeds.cols());
+  walls << bseeds, columns.seeds;
   const FrontSeeds front =
-      auto_seeds ? metric_front_seeds(p.grid, p.domain, metric, bseeds, segments, o.seeding)
+      auto_seeds ? metric_front_seeds(p.grid, p.domain, metric, walls, segments, o.seeding)
                  : FrontSeeds{};
-  Eigen::Matrix2Xd held(2, bseeds.cols() + front.seeds.cols());
-  held << bseeds, front.seeds;
-  // Lloyd's iteration holds the first row (and the corner seeds) and
-  // relaxes the others where the fronts meet; rows are its fixed points
-  // elsewhere, but the collisions need it.
-  const Eigen::Index hold = bseeds.cols() + front.first_row;
+  Eigen::Matrix2Xd held(2, walls.cols() + front.seeds.cols());
+  held << walls, front.seeds;
+  rep.column_seeds = columns.seeds.cols();
+  rep.columns = columns.columns;
+  rep.column_rows = columns.rows;
+  // Lloyd's iteration holds the columns and the first row (and the corner
+  // seeds) and relaxes the others where the fronts meet; rows are its fixed
+  // points elsewhere, but the collisions need it.
+  const Eigen::Index hold = walls.cols() + front.first_row;
   const Eigen::Matrix2Xd interior =
       auto_seeds
           ? metric_interior_seeds(p.grid, p.domain, metric, held, o.seeding)
@@ -312,8 +333,9 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   }
   const CartesianGrid growth_grid = CartesianGrid::covering(loops.lo, loops.hi, n_growth, 3);
   Progress phase("phase", 3);
-  const bool exact = auto_seeds && o.lloyd.iterations != 0 &&
-                     (o.lloyd.cells == "exact" || (o.lloyd.cells == "auto" && isotropic));
+  const bool exact =
+      auto_seeds && o.lloyd.iterations != 0 &&
+      (o.lloyd.cells == "exact" || (o.lloyd.cells == "auto" && (isotropic || exact_dual)));
   rep.exact_lloyd = exact;
   rep.lloyd_iterations = auto_seeds ? lloyd_iterations(o.lloyd, exact) : 0;
   if (exact) {
@@ -345,8 +367,12 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   // Automatic seeds inside a boundary segment's diametral circle go: that
   // segment could be in no dual.
   std::vector<int> encroaching;
+  std::vector<char> in_column;
   if (auto_seeds) {
-    encroaching = encroaching_seeds(p.seeds, static_cast<int>(bseeds.cols()), segments);
+    // In the metric where it is anisotropic: a column's seeds sit well inside
+    // the Euclidean circles of its wall's segments.
+    encroaching = encroaching_seeds(p.seeds, static_cast<int>(bseeds.cols()), segments,
+                                    isotropic ? nullptr : &metric);
     std::vector<int> keep;
     for (int k = 0, e = 0; k < p.seeds.cols(); ++k)
       if (e < static_cast<int>(encroaching.size()) && encroaching[e] == k)
@@ -354,10 +380,12 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
       else
         keep.push_back(k);
     p.seeds = Eigen::Matrix2Xd(p.seeds(Eigen::all, keep));
+    for (const int k : keep) in_column.push_back(k >= bseeds.cols() && k < walls.cols());
   }
   rep.encroaching_dropped = static_cast<long>(encroaching.size());
-  rep.front_seeds = front.seeds.cols() - std::count_if(encroaching.begin(), encroaching.end(),
-                                                       [&](int k) { return k < held.cols(); });
+  rep.front_seeds =
+      held.cols() - bseeds.cols() -
+      std::count_if(encroaching.begin(), encroaching.end(), [&](int k) { return k < held.cols(); });
   rep.interior_seeds = p.seeds.cols() - bseeds.cols() - rep.front_seeds;
   rep.seeding_seconds = seconds_since(seeding);
 
@@ -368,11 +396,24 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
     // The Delaunay triangulation constrained by the boundary segments, in
     // the domain: its Delaunay triangles are dual triangles, the others
     // (at a boundary segment some seed sees first) the fill.
-    const std::vector<std::array<int, 3>> dual = cgal_delaunay_triangles(p.seeds);
     std::vector<std::array<int, 3>> triangles = cgal_constrained_triangles(p.seeds, segments, {});
-    rep.dual_size = static_cast<long>(dual.size());
     rep.dual_checked = true;
     rep.segments = static_cast<long>(segments.size());
+    if (!isotropic) {
+      // Anisotropic: Lawson's flips to the Delaunay triangulation in the
+      // metric (metric_delaunay.h); an edge left not locally Delaunay makes
+      // its triangles the fill.
+      const MetricDelaunay d = metric_delaunay_flips(p.seeds, triangles, segments, metric);
+      rep.metric_dual = true;
+      rep.metric_flips = d.flips;
+      rep.dual_size = static_cast<long>(triangles.size());
+      rep.filled = d.not_delaunay;
+      rep.from_dual = rep.dual_size - rep.filled;
+      rep.growth_seconds = seconds_since(growth);
+      return {p.seeds, std::move(triangles), std::move(in_column)};
+    }
+    const std::vector<std::array<int, 3>> dual = cgal_delaunay_triangles(p.seeds);
+    rep.dual_size = static_cast<long>(dual.size());
     rep.missed_segments = rep.boundary_missed =
         static_cast<long>(missed_segments(segments, dual).size());
     for (const auto& t : triangles)
@@ -457,8 +498,8 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
                   const VoronoiMeshOptions& o, VoronoiReport* report) {
   if (o.lloyd.cells != "auto" && o.lloyd.cells != "exact" && o.lloyd.cells != "grown")
     throw Error("voronoi: Lloyd's cells '" + o.lloyd.cells + "' are none of auto, exact, grown");
-  if (o.dual != "auto" && o.dual != "exact" && o.dual != "grown")
-    throw Error("voronoi: the dual '" + o.dual + "' is none of auto, exact, grown");
+  if (o.dual != "exact" && o.dual != "grown")
+    throw Error("voronoi: the dual '" + o.dual + "' is none of exact, grown");
   VoronoiReport local;
   VoronoiReport& rep = report ? *report : local;
   rep = {};
@@ -467,6 +508,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
   std::vector<Eigen::Vector2d> nodes;
   for (Eigen::Index k = 0; k < boundary.seeds.cols(); ++k) nodes.push_back(boundary.seeds.col(k));
   std::vector<NodeClass> node_class = boundary.classes;
+  std::vector<char> held(nodes.size(), 0);  // column seeds: the clean-up leaves them
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> triangle_surface;
   for (const SurfaceBoundary& surface : boundary.surfaces) {
@@ -501,6 +543,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
       to_node.push_back(static_cast<int>(nodes.size()));
       nodes.push_back(sm.seeds.col(k));
       node_class.push_back({2, surface.tag, std::numeric_limits<double>::quiet_NaN()});
+      held.push_back(k < static_cast<Eigen::Index>(sm.held.size()) && sm.held[k]);
     }
     for (const auto& t : sm.triangles) {
       triangles.push_back({to_node[t[0]], to_node[t[1]], to_node[t[2]]});
@@ -516,7 +559,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
   // Topological clean-up: the interior nodes of three triangles go.
   if (o.cleanup) {
     rep.valence_three =
-        remove_valence_three(triangles, triangle_surface, interior_nodes(node_class));
+        remove_valence_three(triangles, triangle_surface, free_nodes(node_class, held));
   }
   // Nodes no triangle uses (interior seeds cut off by a boundary chord) go.
   std::vector<int> renumber(nodes.size(), -1);
@@ -530,10 +573,12 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
   m.order = 1;
   m.x.resize(2, count);
   m.node_class.resize(count);
+  std::vector<char> m_held(count, 0);
   for (std::size_t k = 0; k < nodes.size(); ++k)
     if (renumber[k] >= 0) {
       m.x.col(renumber[k]) = nodes[k];
       m.node_class[renumber[k]] = node_class[k];
+      m_held[renumber[k]] = held[k];
     }
   m.tri.resize(3, static_cast<Eigen::Index>(triangles.size()));
   for (std::size_t f = 0; f < triangles.size(); ++f)
@@ -562,7 +607,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
     return 4 * std::sqrt(3.0) * area / (a.dot(M * a) + b.dot(M * b) + c.dot(M * c));
   };
   if (o.smooth > 0) {
-    std::vector<char> free_node = interior_nodes(m.node_class);
+    std::vector<char> free_node = free_nodes(m.node_class, m_held);
     rep.smoothing_moves = smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
     if (o.cleanup) {
       rep.flips += flip_edges(m, metric_mean_ratio);
@@ -571,8 +616,8 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
       const std::vector<int> gone = remove_valence_four(m, free_node, metric_mean_ratio);
       rep.valence_four = static_cast<int>(gone.size());
       if (!gone.empty()) {
-        drop_nodes(m, gone);
-        free_node = interior_nodes(m.node_class);
+        drop_nodes(m, gone, m_held);
+        free_node = free_nodes(m.node_class, m_held);
         rep.smoothing_moves += smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
         rep.flips += flip_edges(m, metric_mean_ratio);
       }
@@ -591,6 +636,17 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
   } else if (o.cleanup) {
     rep.flips = flip_edges(m, metric_mean_ratio);
   }
+  // The shapes in the metric (Q11, the mean ratio, in M at each centroid).
+  double sum = 0;
+  rep.metric_quality_min = m.num_triangles() > 0 ? 1.0 : 0.0;
+  for (int t = 0; t < m.num_triangles(); ++t) {
+    Eigen::Matrix<double, 2, 3> X;
+    for (int k = 0; k < 3; ++k) X.col(k) = m.x.col(m.tri(k, t));
+    const double q = metric_mean_ratio(X);
+    rep.metric_quality_min = std::min(rep.metric_quality_min, q);
+    sum += q;
+  }
+  rep.metric_quality_mean = m.num_triangles() > 0 ? sum / m.num_triangles() : 0.0;
   return m;
 }
 

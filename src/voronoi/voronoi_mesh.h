@@ -38,9 +38,13 @@ struct VoronoiMeshOptions {
   /// The triangulation the clean-up starts from | grown: the dual of the
   /// crystals grown on the grid (thesis Ch 2) | exact: the Delaunay
   /// triangulation of the seeds (CGAL), dual to their Euclidean Voronoi
-  /// cells, the crystals of a locally constant isotropic metric | auto:
-  /// exact where the metric is isotropic everywhere, else grown.
-  std::string dual = "auto";
+  /// cells, the crystals of a locally constant isotropic metric; where the
+  /// metric is anisotropic, made Delaunay in it by Lawson's flips
+  /// (metric_delaunay.h), the dual of their Voronoi cells in the metric of
+  /// each quad. On NACA-7526 with metric=bl, 5:1 to 1000:1 (docs/voronoi.md)
+  /// exact made no fill and curved to p = 3 at 0.977-0.984, grown filled
+  /// triangles from 10:1 and could not go past 20:1.
+  std::string dual = "exact";
   std::string engine = "fast_marching";  ///< a name of voronoi_engines()
   /// Grid nodes along a surface's longer side; 0: its smallest size over 6
   /// cells for the grown dual, over 2 for the exact one (whose grid serves only
@@ -63,11 +67,15 @@ struct VoronoiSurfaceReport {
   CartesianGrid grid;    ///< of the growth (seeding: finer if fine_seeds > 0)
   long fine_seeds = 0;   ///< seeds finer than the growth grid resolves, grown in windows
   int fine_windows = 0;  ///< windows round them (of `windows`)
-  long boundary_seeds = 0, front_seeds = 0, interior_seeds = 0;
-  long encroaching_dropped = 0;  ///< automatic seeds in a boundary segment's diametral circle
-  bool exact_lloyd = false;      ///< Lloyd's iteration on exact cells (exact_lloyd.h)
-  int lloyd_iterations = 0;      ///< its iterations (at most: exact cells stop once still)
-  bool exact_dual = false;       ///< the seeds' Delaunay triangulation, no growth
+  long boundary_seeds = 0, front_seeds = 0, interior_seeds = 0;  ///< front: columns and rows
+  long column_seeds = 0;             ///< in columns across anisotropic walls (column_seeds.h)
+  int columns = 0, column_rows = 0;  ///< columns started, seeds in the longest
+  long encroaching_dropped = 0;      ///< automatic seeds in a boundary segment's diametral circle
+  bool exact_lloyd = false;          ///< Lloyd's iteration on exact cells (exact_lloyd.h)
+  int lloyd_iterations = 0;          ///< its iterations (at most: exact cells stop once still)
+  bool exact_dual = false;           ///< the seeds' Delaunay triangulation, no growth
+  bool metric_dual = false;  ///< ... made Delaunay in an anisotropic metric (metric_delaunay.h)
+  int metric_flips = 0;      ///< by these flips
   double seeding_seconds = 0, growth_seconds = 0;
   long dual_size = 0;         ///< triangles of the first dual
   bool dual_checked = false;  ///< the refined dual passed check_dual
@@ -93,6 +101,9 @@ struct VoronoiReport {
   int valence_flips = 0;  ///< edges flipped towards valence 6 (valence_flips.h)
   int flips = 0;          ///< edges flipped
   int raise_steps = 0;    ///< steps raising the worst triangle (raise_worst_triangle)
+  /// The result's mean ratio (Q11) in the metric at each centroid: 1 for a
+  /// triangle equilateral in it.
+  double metric_quality_min = 0, metric_quality_mean = 0;
 };
 
 /// A linear triangle mesh of the surfaces of `boundary` (nodes: the boundary

@@ -150,6 +150,33 @@ TEST_CASE("voronoi: a boundary-layer metric stretches the triangles at the walls
   CHECK(bad.output.find("bl_aspect") != std::string::npos);
 }
 
+TEST_CASE(
+    "voronoi: a 100:1 boundary layer from the metric, columns across the walls, no fill, "
+    "curved to p = 3 above 0.8",
+    "[app][voronoi]") {
+  // Issue 22's target: metric=bl at 100:1, every triangle from the dual (the
+  // seeds' Delaunay triangulation in the metric), valid after curve:p=3 with
+  // worst minJ/maxJ >= 0.8; on the plate's hole and on NACA-7526's
+  // wall with its sharp trailing edge (a fan of columns).
+  const TempDir dir;
+  const std::string out = dir / "bl100.msh";
+  for (const std::string model : {"plate_hole.geo", "naca.geo"}) {
+    const auto r =
+        run_homesh(geo + model + " -m voronoi:metric=bl:bl_aspect=100 -m curve:p=3 " + out);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(logged(r.output, R"((\d+) seeds in \d+ columns across the anisotropic walls)") > 300);
+    CHECK(logged(r.output, R"(columns across the anisotropic walls \(up to (\d+) a column)") >= 12);
+    CHECK(logged(r.output, R"(, (\d+) with an edge left not Delaunay in it)") == 0);
+    CHECK(logged(r.output, R"(from the dual, (\d+) from the fill)") == 0);
+    std::smatch m;
+    REQUIRE(std::regex_search(
+        r.output, m,
+        std::regex(R"(validity: 0 invalid of \d+ triangles.*worst minJ/maxJ (\d\.\d+))")));
+    CHECK(std::stod(m[1]) >= 0.8);
+  }
+}
+
 TEST_CASE("voronoi: seeds and metric from files, errors naming file and line", "[app][voronoi]") {
   const TempDir dir;
   const std::string out = dir / "files.msh";

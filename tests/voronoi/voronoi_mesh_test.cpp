@@ -307,14 +307,16 @@ TEST_CASE("voronoi_mesh: an isotropic metric takes the exact dual, the seeds' De
       violations += (m.x.col(k) - centre).norm() < r * (1 - 1e-9);
   }
   CHECK(violations == 0);
-  // An anisotropic metric grows the crystals; the option forces either.
+  // An anisotropic metric takes the exact dual made Delaunay in the metric;
+  // the option grows the crystals instead.
   homesh::VoronoiReport grown;
   homesh::voronoi_mesh(b, MetricField(coarse, aniso), o, &grown);
-  CHECK_FALSE(grown.surfaces.at(0).exact_dual);
+  CHECK(grown.surfaces.at(0).exact_dual);
+  CHECK(grown.surfaces.at(0).metric_dual);
   o.dual = "grown";
   homesh::voronoi_mesh(b, MetricField(coarse, iso), o, &grown);
   CHECK_FALSE(grown.surfaces.at(0).exact_dual);
   o.dual = "Exact";
   CHECK_THROWS_WITH(homesh::voronoi_mesh(b, MetricField(coarse, iso), o),
-                    "voronoi: the dual 'Exact' is none of auto, exact, grown");
+                    "voronoi: the dual 'Exact' is none of exact, grown");
 }

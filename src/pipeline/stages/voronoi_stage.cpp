@@ -49,6 +49,8 @@ MetricField make_metric(const std::string& metric, const Mesh& reference, const 
 
 // How the dual was made, for the log.
 std::string dual_text(const VoronoiSurfaceReport& s, const VoronoiMeshOptions& o) {
+  if (s.exact_dual && s.metric_dual)
+    return "exact dual (Delaunay of the seeds in the metric, no growth)";
   if (s.exact_dual) return "exact dual (Delaunay of the seeds, no growth)";
   return "engine " + o.engine;
 }
@@ -65,7 +67,17 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
                                         s.lloyd_iterations, s.exact_lloyd ? "exact" : "grown",
                                         s.encroaching_dropped),
         s.seeding_seconds, dual_text(s, o.mesher), s.growth_seconds);
-    if (s.exact_dual)
+    if (s.columns > 0)
+      log.info(
+          "voronoi: surface {}: {} seeds in {} columns across the anisotropic walls (up to {} a "
+          "column)",
+          s.tag, s.column_seeds, s.columns, s.column_rows);
+    if (s.exact_dual && s.metric_dual)
+      log.info(
+          "voronoi: surface {}: constrained Delaunay of the seeds, {} edges flipped to make it "
+          "Delaunay in the metric; {} triangles, {} with an edge left not Delaunay in it",
+          s.tag, s.metric_flips, s.dual_size, s.filled);
+    else if (s.exact_dual)
       log.info("voronoi: surface {}: dual {} triangles, {} boundary segments not among their edges",
                s.tag, s.dual_size, s.missed_segments);
     else
@@ -100,6 +112,10 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
         "voronoi: {} smoothing sweeps of the interior nodes, {} moves; {} steps raising the "
         "worst triangle",
         o.mesher.smooth, rep.smoothing_moves, rep.raise_steps);
+  log.info(
+      "voronoi: shape in the metric (mean ratio, Q11 at each centroid's metric): worst {:.4f}, "
+      "mean {:.4f}",
+      rep.metric_quality_min, rep.metric_quality_mean);
   if (rep.dropped_seeds > 0)
     log.info("voronoi: {} interior seeds outside the boundary polygon left out", rep.dropped_seeds);
 }
@@ -217,14 +233,13 @@ Stage voronoi_stage() {
       one_of({"auto", "exact", "grown"}),
       "the regions Lloyd's centroids are taken of | exact: the seeds' Euclidean Voronoi cells "
       "(CGAL), weighted by sqrt(det M) M, no grid | grown: the crystals grown on the grid | "
-      "auto: exact where the metric is isotropic everywhere, else grown");
+      "auto: exact with dual=exact or where the metric is isotropic everywhere, else grown");
   t.add(
-      "dual", [](O& o) -> std::string& { return o.mesher.dual; },
-      one_of({"auto", "exact", "grown"}),
-      "the triangulation of the seeds | grown: dual to the crystals grown on the grid "
-      "(thesis Ch 2) | exact: their Delaunay triangulation (CGAL), dual to their Euclidean "
-      "Voronoi cells, no grid | auto: exact where the metric is isotropic everywhere, "
-      "else grown");
+      "dual", [](O& o) -> std::string& { return o.mesher.dual; }, one_of({"exact", "grown"}),
+      "the triangulation of the seeds | exact: their Delaunay triangulation (CGAL), dual to "
+      "their Euclidean Voronoi cells, no grid; where the metric is anisotropic, made Delaunay "
+      "in it by edge flips (Lawson's, in the metric of each quad) | grown: dual to the "
+      "crystals grown on the grid (thesis Ch 2)");
   t.add(
       "smooth", [](O& o) -> int& { return o.mesher.smooth; }, integer(0, 100),
       "sweeps of smart smoothing of the interior nodes after the dual (Laplacian or "
