@@ -221,7 +221,9 @@ Stage voronoi_stage() {
       "the unit triangles (in the metric) on the row before (Rebay's frontal placement), "
       "and a seed splitting each corner of 75-140 degrees; Poisson-disc seeds fill where "
       "the fronts meet, Lloyd's iteration holds the first row | N: N rows | 0: none, "
-      "Poisson-disc seeds only");
+      "Poisson-disc seeds only. Where the metric is at least 2:1 at a wall, columns come "
+      "first: seeds on the wall's normals at unit steps of the metric up to where it is "
+      "below 1.5:1, a fan of them at sharp convex corners, held by Lloyd and the clean-up");
   t.add(
       "lloyd", [](O& o) -> int& { return o.mesher.lloyd.iterations; },
       integer(0, 100, {{"auto", kAutoIterations}}),
@@ -279,9 +281,10 @@ Stage voronoi_stage() {
       "their own (Lloyd's iteration too) | off: on one grid of 6 cells per smallest size");
   return make_stage<O>("voronoi",
                        "new linear triangle mesh of the input's CAD, dual to the Voronoi diagram "
-                       "of seeds placed in the metric: exact (their Delaunay triangulation) where "
-                       "the metric is isotropic, crystal growth (thesis Ch 2) where it is not "
-                       "(replaces any mesh)",
+                       "of seeds placed in the metric (in columns across the walls where it is "
+                       "anisotropic): their Delaunay triangulation in the metric, or with "
+                       "dual=grown the dual of crystals grown in it (thesis Ch 2) (replaces any "
+                       "mesh)",
                        t, run, true, true);
 }
 
