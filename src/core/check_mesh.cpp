@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/input_limits.h"
+#include "element/quadrature.h"
 
 namespace homesh {
 namespace {
@@ -31,6 +32,59 @@ std::string fmt_number(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
+}
+
+// Twice the signed area of an element, and the square of its longest
+// corner-to-corner side (its scale): of its corners' polygon, and, for a
+// curved element (order p, Gmsh order: the corners, then each edge's p - 1
+// nodes from its first corner to its second, equispaced in the edge's
+// parameter), the larger of that and the boundary integral of x dy - y dx
+// along the edges' polynomials (degree p, the integrand 2p - 1: exact by p
+// Gauss points), which is the integral of det J over the element. So an
+// element is refused as inverted only if both are clockwise: a valid thin
+// element round a leading edge at p = 3 can have its three corners (and even
+// the polygon through all its boundary nodes) clockwise, its edges' chords
+// cutting across it, and homesh certified and wrote it; an element folded
+// inside, its corners counter-clockwise, is left to the certification.
+std::pair<double, double> boundary_area2(const Mesh& m, const Eigen::MatrixXi& nodes, int e,
+                                         int corners) {
+  const int p = m.order;
+  double scale = 0;
+  for (int k = 0; k < corners; ++k)
+    scale = std::max(scale,
+                     (m.x.col(nodes((k + 1) % corners, e)) - m.x.col(nodes(k, e))).squaredNorm());
+  double polygon = 0;
+  for (int k = 0; k < corners; ++k) {
+    const Eigen::Vector2d a = m.x.col(nodes(k, e)), b = m.x.col(nodes((k + 1) % corners, e));
+    polygon += a.x() * b.y() - a.y() * b.x();
+  }
+  if (p == 1) return {polygon, scale};
+  const LineQuadratureRule q = line_quadrature(2 * p - 1);
+  double area2 = 0;
+  std::vector<Eigen::Vector2d> edge(p + 1);
+  for (int k = 0; k < corners; ++k) {
+    edge[0] = m.x.col(nodes(k, e));
+    for (int j = 1; j < p; ++j) edge[j] = m.x.col(nodes(corners + k * (p - 1) + j - 1, e));
+    edge[p] = m.x.col(nodes((k + 1) % corners, e));
+    for (Eigen::Index g = 0; g < q.points.size(); ++g) {
+      // The Lagrange basis on t_i = i / p and its derivative at t.
+      const double t = q.points(g);
+      Eigen::Vector2d x = Eigen::Vector2d::Zero(), dx = Eigen::Vector2d::Zero();
+      for (int i = 0; i <= p; ++i) {
+        double l = 1, dl = 0;
+        for (int j = 0; j <= p; ++j) {
+          if (j == i) continue;
+          const double den = static_cast<double>(i - j) / p, num = t - static_cast<double>(j) / p;
+          dl = (dl * num + l) / den;
+          l *= num / den;
+        }
+        x += l * edge[i];
+        dx += dl * edge[i];
+      }
+      area2 += q.weights(g) * (x.x() * dx.y() - x.y() * dx.x());
+    }
+  }
+  return {std::max(polygon, area2), scale};
 }
 
 // Every corner edge bounds one or two elements (triangles or quadrilaterals):
@@ -62,12 +116,7 @@ void check_quads(const Mesh& m, const std::string& source) {
   std::set<std::array<int, 4>> seen;
   for (int e = 0; e < m.num_quads(); ++e) {
     std::array<int, 4> c = {m.quad(0, e), m.quad(1, e), m.quad(2, e), m.quad(3, e)};
-    double area2 = 0, scale = 0;
-    for (int k = 0; k < 4; ++k) {
-      const Eigen::Vector2d a = m.x.col(c[k]), b = m.x.col(c[(k + 1) % 4]);
-      area2 += a.x() * b.y() - a.y() * b.x();
-      scale = std::max(scale, (b - a).squaredNorm());
-    }
+    const auto [area2, scale] = boundary_area2(m, m.quad, e, 4);
     std::array<int, 4> sorted = c;
     std::sort(sorted.begin(), sorted.end());
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
@@ -99,10 +148,7 @@ void check_mesh(const Mesh& m, const std::string& source) {
   corners.reserve(m.num_triangles());
   for (int e = 0; e < m.num_triangles(); ++e) {
     std::array<int, 3> c = {m.tri(0, e), m.tri(1, e), m.tri(2, e)};
-    const Eigen::Vector2d a = m.x.col(c[0]), b = m.x.col(c[1]), d = m.x.col(c[2]);
-    const double area2 = (b - a).x() * (d - a).y() - (b - a).y() * (d - a).x();
-    const double scale =
-        std::max({(b - a).squaredNorm(), (d - a).squaredNorm(), (d - b).squaredNorm()});
+    const auto [area2, scale] = boundary_area2(m, m.tri, e, 3);
     if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2])
       throw Error(source + ": " + where(m, e) + " repeats a corner node");
     if (std::abs(area2) <= 1e-12 * scale)

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "quality/mesh_validity.h"
 
 using namespace homesh;
 
@@ -105,4 +106,41 @@ TEST_CASE("check_mesh checks quadrilaterals and edges shared with triangles", "[
   third.tri_entity.push_back(1);
   REQUIRE_THROWS_WITH(check_mesh(third, "in.msh"),
                       Catch::Contains("three or more elements (a non-manifold mesh)"));
+}
+
+TEST_CASE(
+    "check_mesh refuses a curved triangle as inverted only if its boundary runs clockwise too",
+    "[mesh]") {
+  // P2: the straight triangle (0, 0), (1, 0), (0.5, 0.05) and its edge nodes
+  // bent round the unit circle, (x, y) -> ((1 - y) sin x, 1 - (1 - y) cos x)
+  // (orientation-preserving), 6 decimals. The corners now run clockwise (the
+  // third lies beyond the chord of the first two, the arc's sag 0.12 being
+  // over the height 0.05) while det J > 0 all over (Gmsh order: corners,
+  // then the nodes of edges 0-1, 1-2, 2-0), as at p = 3 round a leading edge.
+  Mesh m;
+  m.order = 2;
+  m.x.resize(2, 6);
+  m.x << 0, 0.841471, 0.455454, 0.479426, 0.664598, 0.241219,  //
+      0, 0.459698, 0.166297, 0.122417, 0.286603, 0.055310;
+  m.node_class.resize(6);
+  m.tri.resize(6, 1);
+  m.tri << 0, 1, 2, 3, 4, 5;
+  m.tri_entity = {1};
+  const Eigen::Vector2d u = m.x.col(1) - m.x.col(0), v = m.x.col(2) - m.x.col(0);
+  REQUIRE(u.x() * v.y() - u.y() * v.x() < 0);  // the corners clockwise
+  CHECK(mesh_validity(m).invalid == 0);        // certified by its Bezier bounds
+  REQUIRE_NOTHROW(check_mesh(m, "in.msh"));
+  // Its mirror image: corners counter-clockwise, folded all over, left to
+  // the certification, which finds it invalid.
+  Mesh mirrored = m;
+  mirrored.x.row(1) *= -1;
+  REQUIRE_NOTHROW(check_mesh(mirrored, "in.msh"));
+  CHECK(mesh_validity(mirrored).invalid == 1);
+  // A straight P2 triangle listed clockwise, corners and boundary: refused.
+  Mesh straight = m;
+  straight.x << 0, 1, 0.5, 0.5, 0.75, 0.25,  //
+      0, 0, -0.1, 0, -0.05, -0.05;
+  REQUIRE_THROWS_WITH(check_mesh(straight, "in.msh"),
+                      "in.msh: triangle 1 at (0.5, -0.0333333) is inverted (its corners run "
+                      "clockwise)");
 }
