@@ -148,6 +148,37 @@ std::vector<char> free_nodes(const std::vector<NodeClass>& node_class,
   return out;
 }
 
+// free_nodes on m, less the nodes of the triangles at a held node: the
+// smoothing judges a move by the metric at its triangles' centroids, which
+// near a 1500:1 layer favour triangles reaching into it (it moved seeds from
+// above the columns to within the first cell of the wall on
+// circle_bl_1e-5_fine: curve:p=3 0.81 against 0.999 without).
+std::vector<char> movable_nodes(const Mesh& m, const std::vector<char>& held) {
+  std::vector<char> out = free_nodes(m.node_class, held);
+  for (int t = 0; t < m.num_triangles(); ++t)
+    if (held[m.tri(0, t)] || held[m.tri(1, t)] || held[m.tri(2, t)])
+      for (int k = 0; k < 3; ++k) out[m.tri(k, t)] = 0;
+  return out;
+}
+
+// Per boundary seed: the CAD's curves turn by more than `degrees` there (a
+// model point where their end tangents, from the fine samples, are not
+// opposite within it); the seeds inside a curve are smooth.
+std::vector<char> sharp_seeds(const SeededBoundary& b, double degrees) {
+  std::map<int, std::vector<Eigen::Vector2d>> away;  // unit tangents leaving the seed
+  for (const auto& [tag, on] : b.curve_seeds) {
+    const Eigen::Matrix2Xd& x = b.curve_samples.at(tag);
+    if (on.empty() || x.cols() < 2) continue;
+    const Eigen::Index n = x.cols();
+    away[on.front()].push_back((x.col(1) - x.col(0)).normalized());
+    away[on.back()].push_back((x.col(n - 2) - x.col(n - 1)).normalized());
+  }
+  std::vector<char> out(b.seeds.cols(), 0);
+  for (const auto& [s, t] : away)
+    out[s] = t.size() != 2 || !(t[0].dot(t[1]) <= -std::cos(degrees * M_PI / 180));
+  return out;
+}
+
 // Drops nodes `gone` (ascending; in no triangle, line or point) from m,
 // renumbering the others (and their flags `held`) in order.
 void drop_nodes(Mesh& m, const std::vector<int>& gone, std::vector<char>& held) {
@@ -269,8 +300,8 @@ struct SurfaceMesh {
 // Thesis Ch 2 on one surface: seeds, growth, dual, regrowth, conforming fill.
 SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bseeds,
                          const std::vector<std::array<int, 2>>& segments, const MetricField& metric,
-                         const VoronoiMeshOptions& o, std::vector<char>& list_used,
-                         VoronoiSurfaceReport& rep) {
+                         const VoronoiMeshOptions& o, const std::vector<char>& sharp,
+                         std::vector<char>& list_used, VoronoiSurfaceReport& rep) {
   const double extent = (loops.hi - loops.lo).maxCoeff();
   const bool isotropic = metric.anisotropy() <= kIsotropic;
   const bool exact_dual = o.dual == "exact";
@@ -299,12 +330,22 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   // (column_seeds.h), then the rows where there are none.
   const ColumnSeeds columns =
       auto_seeds && !isotropic
-          ? metric_column_seeds(p.grid, p.domain, metric, bseeds, segments, o.seeding)
+          ? metric_column_seeds(p.grid, p.domain, metric, bseeds, segments, o.seeding, sharp)
           : ColumnSeeds{};
   Eigen::Matrix2Xd walls(2, bseeds.cols() + columns.seeds.cols());
   walls << bseeds, columns.seeds;
+  // The rows and corner seeds only on the segments no column stands on:
+  // across an anisotropic wall a row's apexes and the corner seeds (a wall
+  // turning by 2 degrees is a corner of 75-140 degrees in a 1500:1 metric)
+  // fall between the columns (circle_bl_1e-5_fine: curve:p=3 0.34, without
+  // them 0.999).
+  std::vector<std::array<int, 2>> open_segments;
+  for (const auto& sg : segments)
+    if (!std::binary_search(columns.bases.begin(), columns.bases.end(), sg[0]) &&
+        !std::binary_search(columns.bases.begin(), columns.bases.end(), sg[1]))
+      open_segments.push_back(sg);
   const FrontSeeds front =
-      auto_seeds ? metric_front_seeds(p.grid, p.domain, metric, walls, segments, o.seeding)
+      auto_seeds ? metric_front_seeds(p.grid, p.domain, metric, walls, open_segments, o.seeding)
                  : FrontSeeds{};
   Eigen::Matrix2Xd held(2, walls.cols() + front.seeds.cols());
   held << walls, front.seeds;
@@ -333,17 +374,23 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   }
   const CartesianGrid growth_grid = CartesianGrid::covering(loops.lo, loops.hi, n_growth, 3);
   Progress phase("phase", 3);
+  // With columns, no automatic Lloyd iterations: the exact cells' centroids,
+  // weighted by sqrt(det M), pull seeds from above the layer down into the
+  // gaps between columns (circle_bl_1e-5_fine: curve:p=3 0.18 with 15, 0.999
+  // without).
+  LloydOptions lloyd = o.lloyd;
+  if (columns.seeds.cols() > 0 && lloyd.iterations == kAutoIterations) lloyd.iterations = 0;
   const bool exact =
-      auto_seeds && o.lloyd.iterations != 0 &&
-      (o.lloyd.cells == "exact" || (o.lloyd.cells == "auto" && (isotropic || exact_dual)));
+      auto_seeds && lloyd.iterations != 0 &&
+      (lloyd.cells == "exact" || (lloyd.cells == "auto" && (isotropic || exact_dual)));
   rep.exact_lloyd = exact;
-  rep.lloyd_iterations = auto_seeds ? lloyd_iterations(o.lloyd, exact) : 0;
+  rep.lloyd_iterations = auto_seeds ? lloyd_iterations(lloyd, exact) : 0;
   if (exact) {
     phase.update(0, "Lloyd's iteration on the seeds' exact cells");
     p.seeds = exact_lloyd(
         p.seeds, static_cast<int>(hold), metric,
-        [&p](const Eigen::Vector2d& x) { return bilinear_at(p.grid, p.domain, x); }, o.lloyd);
-  } else if (auto_seeds && o.lloyd.iterations != 0) {
+        [&p](const Eigen::Vector2d& x) { return bilinear_at(p.grid, p.domain, x); }, lloyd);
+  } else if (auto_seeds && lloyd.iterations != 0) {
     phase.update(0, "Lloyd's iteration on the seeds");
     // On a grid kLloydCoarsening times coarser: a centroid needs far fewer
     // cells per region than a dual triangle does. Seeds finer than that grid
@@ -357,12 +404,12 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
     if (n_growth < n)
       for (std::size_t s = 0; s < h_seed.size(); ++s)
         held_fine[s] = h_seed[s] < kCellsPerSize * coarse.grid.ds();
-    p.seeds = lloyd_relaxation(coarse, static_cast<int>(hold), o.engine, o.lloyd, held_fine);
+    p.seeds = lloyd_relaxation(coarse, static_cast<int>(hold), o.engine, lloyd, held_fine);
     std::vector<int> fine_free;
     for (Eigen::Index s = hold; s < p.seeds.cols(); ++s)
       if (held_fine[s]) fine_free.push_back(static_cast<int>(s));
     p.seeds =
-        lloyd_in_windows(p, fine_free, loops, kLloydCoarsening * p.grid.ds(), o.engine, o.lloyd);
+        lloyd_in_windows(p, fine_free, loops, kLloydCoarsening * p.grid.ds(), o.engine, lloyd);
   }
   // Automatic seeds inside a boundary segment's diametral circle go: that
   // segment could be in no dual.
@@ -370,9 +417,19 @@ SurfaceMesh mesh_surface(const SurfaceLoops& loops, const Eigen::Matrix2Xd& bsee
   std::vector<char> in_column;
   if (auto_seeds) {
     // In the metric where it is anisotropic: a column's seeds sit well inside
-    // the Euclidean circles of its wall's segments.
+    // the Euclidean circles of its wall's segments. The fans' seeds stay: the
+    // constrained triangulation keeps every segment, and a fan's first seeds
+    // lie within the ellipse that the metric of a segment's midpoint draws
+    // round the segment by a sharp corner (slat_flap_bl_1e-4: without them
+    // curving failed at 84 %; keeping every column's seed lowered the p = 3
+    // worst at three leading edges, naca0006_bl_1e-4 0.89 -> 0.69).
     encroaching = encroaching_seeds(p.seeds, static_cast<int>(bseeds.cols()), segments,
                                     isotropic ? nullptr : &metric);
+    encroaching.erase(std::remove_if(encroaching.begin(), encroaching.end(),
+                                     [&](int k) {
+                                       return k < walls.cols() && columns.in_fan[k - bseeds.cols()];
+                                     }),
+                      encroaching.end());
     std::vector<int> keep;
     for (int k = 0, e = 0; k < p.seeds.cols(); ++k)
       if (e < static_cast<int>(encroaching.size()) && encroaching[e] == k)
@@ -511,6 +568,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
   std::vector<char> held(nodes.size(), 0);  // column seeds: the clean-up leaves them
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> triangle_surface;
+  const std::vector<char> sharp = sharp_seeds(boundary, o.seeding.column_turn);
   for (const SurfaceBoundary& surface : boundary.surfaces) {
     const SurfaceLoops loops = surface_loops(boundary, surface);
     // This surface's boundary seeds, renumbered from 0.
@@ -531,7 +589,10 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
 
     VoronoiSurfaceReport sr;
     sr.tag = surface.tag;
-    const SurfaceMesh sm = mesh_surface(loops, bseeds, segments, metric, o, list_used, sr);
+    std::vector<char> local_sharp;
+    for (const int k : local_to_node) local_sharp.push_back(sharp[k]);
+    const SurfaceMesh sm =
+        mesh_surface(loops, bseeds, segments, metric, o, local_sharp, list_used, sr);
     rep.dual_triangles += static_cast<int>(sr.from_dual);
     rep.filled_triangles += static_cast<int>(sr.filled);
     rep.refined_seeds += static_cast<int>(sr.refined_seeds);
@@ -607,7 +668,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
     return 4 * std::sqrt(3.0) * area / (a.dot(M * a) + b.dot(M * b) + c.dot(M * c));
   };
   if (o.smooth > 0) {
-    std::vector<char> free_node = free_nodes(m.node_class, m_held);
+    std::vector<char> free_node = movable_nodes(m, m_held);
     rep.smoothing_moves = smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
     if (o.cleanup) {
       rep.flips += flip_edges(m, metric_mean_ratio);
@@ -617,7 +678,7 @@ Mesh voronoi_mesh(const SeededBoundary& boundary, const MetricField& metric,
       rep.valence_four = static_cast<int>(gone.size());
       if (!gone.empty()) {
         drop_nodes(m, gone, m_held);
-        free_node = free_nodes(m.node_class, m_held);
+        free_node = movable_nodes(m, m_held);
         rep.smoothing_moves += smooth_free_nodes(m.x, m.tri, free_node, metric, o.smooth);
         rep.flips += flip_edges(m, metric_mean_ratio);
       }

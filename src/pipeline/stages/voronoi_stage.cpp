@@ -179,6 +179,11 @@ void run(Context& ctx, const VoronoiStageOptions& o) {
   ctx.results["dual_triangles"] = rep.dual_triangles;
   ctx.results["filled_triangles"] = rep.filled_triangles;
   ctx.results["refined_seeds"] = rep.refined_seeds;
+  long columns = 0;
+  for (const VoronoiSurfaceReport& s : rep.surfaces) columns += s.column_seeds;
+  ctx.results["column_seeds"] = static_cast<double>(columns);
+  ctx.results["metric_quality_min"] = rep.metric_quality_min;
+  ctx.results["metric_quality_mean"] = rep.metric_quality_mean;
   ctx.log.info("voronoi: metric {}{}: {} nodes, {} triangles, {} boundary lines ({:.2f} s)",
                o.metric == "iso" ? "iso (sizes of Gmsh's default mesh)" : o.metric, walls_note,
                m.num_nodes(), m.num_triangles(), m.num_lines(),

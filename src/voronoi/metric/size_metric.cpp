@@ -138,7 +138,12 @@ MetricField boundary_layer_metric(const MetricField& iso,
   // coarse nodes lie too far apart for the first cells of a 100:1 layer.
   MetricField out(g, std::move(M));
   if (pts.empty()) return out;
-  return out.with_layer(std::make_shared<const WallLayer>(iso, walls, o.wall_aspect, o.thickness));
+  double spacing = 0;
+  for (const Eigen::Matrix2Xd& w : walls)
+    for (Eigen::Index k = 0; k + 1 < w.cols(); ++k)
+      spacing = std::max(spacing, (w.col(k + 1) - w.col(k)).norm());
+  return out.with_layer(std::make_shared<const WallLayer>(iso, walls, o.wall_aspect, o.thickness,
+                                                          std::move(dist), 0.5 * spacing));
 }
 
 }  // namespace homesh

@@ -19,15 +19,22 @@ namespace homesh {
 /// point on a segment, along it.
 class WallDistance {
  public:
-  /// walls: polylines, 2 by n each (n >= 2). Throws homesh::Error if none
-  /// has a segment of positive length.
-  explicit WallDistance(const std::vector<Eigen::Matrix2Xd>& walls);
+  /// walls: polylines, 2 by n each (n >= 2), kept as chords that leave out
+  /// no sample by more than `tolerance` and are at most `longest` long (0,
+  /// inf: every segment as sampled). Throws homesh::Error if none has a
+  /// segment of positive length.
+  explicit WallDistance(const std::vector<Eigen::Matrix2Xd>& walls, double tolerance = 0,
+                        double longest = 0);
   struct Nearest {
     double distance = 0;  ///< infinity if no segment lies within the reach
     Eigen::Vector2d tangent = Eigen::Vector2d::UnitX();
   };
   /// The nearest segment within `reach` of p.
   Nearest nearest(const Eigen::Vector2d& p, double reach) const;
+  /// The same when some segment is known to lie within `bound` of p: one
+  /// search of that radius.
+  Nearest nearest_within(const Eigen::Vector2d& p, double bound) const;
+  int segments() const { return static_cast<int>(a_.size()); }
 
  private:
   std::vector<Eigen::Vector2d> a_, b_;  // segment ends
@@ -41,16 +48,26 @@ class WallDistance {
 /// M = t t^T / h^2 + n n^T / h_n^2 (Eq 2.7), n perpendicular to t.
 class WallLayer {
  public:
+  /// coarse_distance: at each node of iso's coarse grid, an upper bound of
+  /// its distance to the walls within `slack` of it (the nearest wall
+  /// sample's distance, slack the samples' half spacing), so that a point's
+  /// search starts at the right radius and a point far from the walls needs
+  /// none (the walls' chords leave out no sample by more than 1 % of the
+  /// first cell, h_min / A, and are at most the smallest size long).
   WallLayer(MetricField iso, const std::vector<Eigen::Matrix2Xd>& walls, double aspect,
-            double thickness);
+            double thickness, std::vector<double> coarse_distance, double slack);
   Eigen::Matrix2d at(const Eigen::Vector2d& p) const;
   double aspect() const { return aspect_; }
   const MetricField& iso() const { return iso_; }
+  const WallDistance& walls() const { return walls_; }
 
  private:
   MetricField iso_;
   WallDistance walls_;
+  double tolerance_;  // of the walls' chords
   double aspect_, thickness_;
+  std::vector<double> distance_;  // at iso_'s coarse nodes
+  double slack_;
 };
 
 }  // namespace homesh

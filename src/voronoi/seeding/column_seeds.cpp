@@ -38,7 +38,7 @@ Eigen::Vector2d left_normal(const Eigen::Vector2d& v) { return Eigen::Vector2d(-
 ColumnSeeds metric_column_seeds(const CartesianGrid& g, const Eigen::VectorXd& domain,
                                 const MetricField& metric, const Eigen::Matrix2Xd& boundary_seeds,
                                 const std::vector<std::array<int, 2>>& segments,
-                                const SeedingOptions& o) {
+                                const SeedingOptions& o, const std::vector<char>& sharp) {
   ColumnSeeds out;
   if (!(o.column_anisotropy > 0)) return out;
   const Eigen::Vector2d lo = g.origin, hi = g.point(g.nx - 1, g.ny - 1);
@@ -54,7 +54,9 @@ ColumnSeeds metric_column_seeds(const CartesianGrid& g, const Eigen::VectorXd& d
   const double cos_turn = std::cos(o.column_turn * M_PI / 180);
   struct Column {
     Eigen::Vector2d x, e, base;
-    int fan;  // the corner's index for a fan's columns, else -1
+    int fan;         // the corner's index for a fan's columns, else -1
+    int seed;        // the boundary seed it starts from
+    double spacing;  // from the other seeds, metric
   };
   std::vector<Column> columns;
   for (const auto& [s, q] : next) {
@@ -63,31 +65,44 @@ ColumnSeeds metric_column_seeds(const CartesianGrid& g, const Eigen::VectorXd& d
     const Eigen::Vector2d x = boundary_seeds.col(s);
     const Eigen::Vector2d u = (x - boundary_seeds.col(p->second)).normalized();
     const Eigen::Vector2d v = (boundary_seeds.col(q) - x).normalized();
+    // Spaced from the other seeds as the wall's seeds are: a column next to
+    // a short segment (0.72 of the metric's unit by a corner of
+    // slat_flap_bl_1e-4's slat) would otherwise stop at its first seed.
+    const Eigen::Matrix2d Mx = metric.metric_at(x);
+    const auto length = [&](int a, int b) {
+      const Eigen::Vector2d d = boundary_seeds.col(b) - boundary_seeds.col(a);
+      return std::sqrt(d.dot(Mx * d));
+    };
+    const double spacing = o.front_spacing * std::min({1.0, length(p->second, s), length(s, q)});
     if (!u.allFinite() || !v.allFinite()) continue;
-    if (!(u.dot(v) >= cos_turn)) {
+    const bool corner = sharp.empty() ? !(u.dot(v) >= cos_turn) : sharp[s] != 0;
+    if (corner) {
       // A corner. Where the wall turns away from the domain by more than
-      // column_turn (a sharp trailing edge), a fan: columns along normals
+      // column_turn (a sharp trailing edge, the domain's angle over 180
+      // degrees), a fan: columns along normals
       // at most column_turn apart from one segment's to the other's, which
       // are not spaced from each other (their first seeds lie within the
       // first cell's height) and whose fine axis the layer metric turns
       // radially there (wall_layer.h).
       const double cross = u.x() * v.y() - u.y() * v.x();
-      if (cross >= 0) continue;
       const double turn = std::acos(std::clamp(u.dot(v), -1.0, 1.0));
+      if (cross >= 0) continue;  // the domain's angle below 180 degrees: none
       const int pieces = static_cast<int>(std::ceil(turn / (o.column_turn * M_PI / 180)));
-      if (metric_ratio(metric.metric_at(x)) < o.column_anisotropy) continue;
+      if (metric_ratio(Mx) < o.column_anisotropy) continue;
       for (int j = 0; j <= pieces; ++j) {
         const Eigen::Vector2d n = Eigen::Rotation2Dd(-turn * j / pieces) * left_normal(u);
-        columns.push_back({x, n, x, s});
+        columns.push_back({x, n, x, s, s, spacing});
       }
       continue;
     }
     const Eigen::Vector2d n = (left_normal(u) + left_normal(v)).normalized();
-    const Axes a = axes_of(metric.metric_at(x), n);
+    const Axes a = axes_of(Mx, n);
     if (a.ratio < o.column_anisotropy || a.fine.dot(n) < cos_turn) continue;
-    columns.push_back({x, a.fine, x, -1});
+    columns.push_back({x, a.fine, x, -1, s, spacing});
   }
   out.columns = static_cast<int>(columns.size());
+  for (const Column& c : columns)
+    if (out.bases.empty() || out.bases.back() != c.seed) out.bases.push_back(c.seed);
   std::vector<Eigen::Vector2d> seeds;
   const double near_wall = 2 * g.ds();
   while (!columns.empty()) {
@@ -103,12 +118,13 @@ ColumnSeeds metric_column_seeds(const CartesianGrid& g, const Eigen::VectorXd& d
       if (a.ratio < o.column_end) continue;
       if ((q - c.base).norm() > near_wall && test.at(q) >= 0) continue;
       const double reach = 2.0 * o.front_spacing * metric_max_speed(Mq);
-      if (!buckets.spaced(q, Mq, o.front_spacing, reach, c.fan)) continue;
+      if (!buckets.spaced(q, Mq, c.spacing, reach, c.fan)) continue;
       buckets.add(q, Mq, c.fan);
       seeds.push_back(q);
+      out.in_fan.push_back(c.fan >= 0);
       // A fan's columns keep their direction: the metric's axis turns
       // between them (radial round the corner only beyond it).
-      alive.push_back({q, c.fan >= 0 ? c.e : a.fine, c.base, c.fan});
+      alive.push_back({q, c.fan >= 0 ? c.e : a.fine, c.base, c.fan, c.seed, c.spacing});
     }
     if (!alive.empty()) ++out.rows;
     columns = std::move(alive);

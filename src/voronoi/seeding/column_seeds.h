@@ -23,6 +23,8 @@ struct ColumnSeeds {
   Eigen::Matrix2Xd seeds{2, 0};  ///< row by row
   int columns = 0;               ///< columns started (boundary seeds with one)
   int rows = 0;                  ///< the longest column's seeds
+  std::vector<int> bases;        ///< the boundary seeds that start columns, increasing
+  std::vector<char> in_fan;      ///< per seed: in a fan's column
 };
 
 /// grid, domain: as for metric_front_seeds; segments: pairs of
@@ -38,9 +40,16 @@ struct ColumnSeeds {
 /// outside the domain (beyond 2 grid cells from the wall) or that is closer
 /// than options.front_spacing (metric, mean of the two points' M) to a seed
 /// placed before it, boundary seeds included.
+///
+/// sharp: per boundary seed, whether the wall has a corner there (the CAD's
+/// tangents turn by more than column_turn); a seed whose segments turn more
+/// where the wall is smooth (a leading edge of radius 0.004 between seeds
+/// 0.013 apart) gets one column on the bisector, not a fan. Empty: the
+/// segments' turn decides.
 ColumnSeeds metric_column_seeds(const CartesianGrid& grid, const Eigen::VectorXd& domain,
                                 const MetricField& metric, const Eigen::Matrix2Xd& boundary_seeds,
                                 const std::vector<std::array<int, 2>>& segments,
-                                const SeedingOptions& options = {});
+                                const SeedingOptions& options = {},
+                                const std::vector<char>& sharp = {});
 
 }  // namespace homesh
