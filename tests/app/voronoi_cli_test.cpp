@@ -177,6 +177,42 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("voronoi: a user's metric file of 100:1 round the plate's hole, no fill, p = 3 above 0.8",
+          "[app][voronoi]") {
+  // Issue 22's target for a user metric: the plate's hole (radius 0.5) with
+  // a layer given on a 101 x 101 grid: size 0.05 along the hole, 0.0005
+  // across it at the wall (100:1), growing linearly to 0.05 at 0.15 out.
+  const TempDir dir;
+  const std::string metric = dir / "layer.txt", out = dir / "user100.msh";
+  {
+    std::ofstream f(metric);
+    f.precision(12);
+    const int n = 101;
+    f << "grid " << n << " " << n << " -1 -1 1 1\n";
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
+        const double r = std::hypot(x, y), d = std::max(r - 0.5, 0.0);
+        const double ht = 0.05, hn = ht * (0.01 + 0.99 * std::min(1.0, d / 0.15));
+        const double nx = r > 0 ? x / r : 1, ny = r > 0 ? y / r : 0;
+        const double a = 1 / (hn * hn), b = 1 / (ht * ht);
+        f << a * nx * nx + b * ny * ny << " " << (a - b) * nx * ny << " "
+          << a * ny * ny + b * nx * nx << "\n";
+      }
+  }
+  const auto r = run_homesh(geo + "plate_hole.geo -m voronoi:metric=" + metric +
+                            " -m curve:p=3 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(logged(r.output, R"((\d+) seeds in \d+ columns across the anisotropic walls)") > 300);
+  CHECK(logged(r.output, R"(from the dual, (\d+) from the fill)") == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(
+      r.output, m,
+      std::regex(R"(validity: 0 invalid of \d+ triangles.*worst minJ/maxJ (\d\.\d+))")));
+  CHECK(std::stod(m[1]) >= 0.8);
+}
+
 TEST_CASE("voronoi: seeds and metric from files, errors naming file and line", "[app][voronoi]") {
   const TempDir dir;
   const std::string out = dir / "files.msh";

@@ -61,11 +61,15 @@ void log_report(Log& log, const VoronoiReport& rep, const VoronoiStageOptions& o
         "voronoi: surface {}: grid {} x {} (ds {:.4g}), {} boundary + {} front + {} interior "
         "seeds ({}, {:.2f} s), {} {:.2f} s",
         s.tag, s.grid.nx, s.grid.ny, s.grid.ds(), s.boundary_seeds, s.front_seeds, s.interior_seeds,
-        o.seeds != "auto" ? o.seeds
-                          : fmt::format("Poisson-disc in the metric, {} Lloyd iterations on {} "
-                                        "cells, {} encroaching on a boundary segment dropped",
-                                        s.lloyd_iterations, s.exact_lloyd ? "exact" : "grown",
-                                        s.encroaching_dropped),
+        o.seeds != "auto"
+            ? o.seeds
+            : fmt::format("Poisson-disc in the metric, {}, {} encroaching on a "
+                          "boundary segment dropped",
+                          s.lloyd_iterations == 0
+                              ? std::string("no Lloyd iterations")
+                              : fmt::format("{} Lloyd iterations on {} cells", s.lloyd_iterations,
+                                            s.exact_lloyd ? "exact" : "grown"),
+                          s.encroaching_dropped),
         s.seeding_seconds, dual_text(s, o.mesher), s.growth_seconds);
     if (s.columns > 0)
       log.info(

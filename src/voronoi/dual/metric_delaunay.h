@@ -35,6 +35,6 @@ struct MetricDelaunay {
 MetricDelaunay metric_delaunay_flips(const Eigen::Matrix2Xd& x,
                                      std::vector<std::array<int, 3>>& triangles,
                                      const std::vector<std::array<int, 2>>& segments,
-                                     const MetricField& metric, int max_sweeps = 100);
+                                     const MetricField& metric, int max_sweeps = 1000);
 
 }  // namespace homesh

@@ -60,6 +60,7 @@ class SpacedSeeds {
     buckets_.add(p);
     M_.push_back(Mp);
     group_.push_back(group);
+    if (midpoint_) longest_.push_back(metric_max_speed(Mp));
   }
   // Whether q is at least `spacing` (metric length, Mq at q) from every seed
   // within `reach`: in the mean of the two points' metrics, or, where the
@@ -82,7 +83,7 @@ class SpacedSeeds {
       if (group >= 0 && group_[k] == group) return true;
       const Eigen::Vector2d p = buckets_.points()[k], v = q - p;
       // Farther than twice the larger of the two long semi-axes: spaced.
-      const double h = std::max(hq, metric_max_speed(M_[k]));
+      const double h = std::max(hq, longest_[k]);
       if (v.squaredNorm() >= 4 * s2 * h * h) return true;
       return v.dot(metric_.metric_at(0.5 * (p + q)) * v) >= s2;
     });
@@ -94,6 +95,7 @@ class SpacedSeeds {
   bool midpoint_;
   std::vector<Eigen::Matrix2d> M_;
   std::vector<int> group_;
+  std::vector<double> longest_;  // each seed's longest semi-axis (with midpoint_)
 };
 
 }  // namespace homesh
