@@ -110,6 +110,13 @@ def in_child(target, args, timeout, timed_out):
     return timed_out
 
 
+def run_method(target, name, method, timeout):
+    """target(conn, name, method) in a fresh child (in_child): the row it sends, or the row
+    of a timeout (the benchmarks' methods on one corpus case each)."""
+    return in_child(target, (name, method), timeout,
+                    dict(case=name, method=method, status="timeout"))
+
+
 def least_time(run, repeat):
     """run() `repeat` times (each a row with "status" and "seconds"): the first row, with the
     least seconds of the runs if all were ok (noise only adds time; the results are the same)."""
@@ -617,6 +624,19 @@ def _sizes(c, walls):
         gmsh.option.setNumber(name, value)
 
 
+def unmeshed(c):
+    """Case c's CAD as a new model of the current Gmsh session, its walls, far field and
+    surfaces in the physical groups WALL, "farfield" and "fluid", its size field set, no mesh
+    (what the meshers are compared on). Returns (surfaces, walls, farfield)."""
+    gmsh.model.add(c.name)
+    surfaces, walls, farfield = _cad(c)
+    for dim, tags, group in [(1, walls, WALL), (1, farfield, "farfield"), (2, surfaces, "fluid")]:
+        if tags:
+            gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), group)
+    _sizes(c, walls)
+    return surfaces, walls, farfield
+
+
 def _gmsh_bl(c, walls, quads=False):
     """Gmsh's BoundaryLayer field on the walls (Quads = 1 with quads), then generate(2)."""
     f = gmsh.model.mesh.field
@@ -660,12 +680,7 @@ def build(c, quiet=True):
     if isinstance(c, str):
         c = case(c)
     gmsh.clear()
-    gmsh.model.add(c.name)
-    surfaces, walls, farfield = _cad(c)
-    for dim, tags, name in [(1, walls, WALL), (1, farfield, "farfield"), (2, surfaces, "fluid")]:
-        if tags:
-            gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), name)
-    _sizes(c, walls)
+    surfaces, walls, farfield = unmeshed(c)
     start, layers_seconds = time.perf_counter(), None
     if c.mesher == "gmsh_bl":
         _gmsh_bl(c, walls)

@@ -61,13 +61,7 @@ def child(conn, name, method):
         gmsh.initialize()
         gmsh.option.setNumber("General.Terminal", 0)
         c = corpus.case(name)
-        gmsh.model.add(c.name)
-        surfaces, walls, farfield = corpus._cad(c)
-        for dim, tags, group in [(1, walls, corpus.WALL), (1, farfield, "farfield"),
-                                 (2, surfaces, "fluid")]:
-            if tags:
-                gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), group)
-        corpus._sizes(c, walls)
+        corpus.unmeshed(c)
         filled = ""
         start = time.perf_counter()
         if method.startswith("gmsh"):
@@ -85,11 +79,6 @@ def child(conn, name, method):
     except Exception as e:  # noqa: BLE001 (recorded, the run goes on)
         row.update(status="error", error=str(e).splitlines()[0][:200])
     conn.send(row)
-
-
-def run_one(name, method, timeout):
-    return corpus.in_child(child, (name, method), timeout,
-                           dict(case=name, method=method, status="timeout"))
 
 
 def main():
@@ -112,7 +101,7 @@ def main():
     rows = []
     for c in cases:
         for m in methods:
-            r = corpus.least_time(lambda: run_one(c.name, m, args.timeout), args.repeat)
+            r = corpus.least_time(lambda: corpus.run_method(child, c.name, m, args.timeout), args.repeat)
             rows.append(r)
             if r["status"] == "ok":
                 print(f"{c.name:28s} {m:20s} {r['triangles']:6d} tri  ICN min {r['icn_min']:.4f}"

@@ -44,13 +44,7 @@ def child(conn, name, method):
     try:
         gmsh.initialize()
         gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.model.add(c.name)
-        surfaces, walls, farfield = corpus._cad(c)
-        for dim, tags, group in [(1, walls, corpus.WALL), (1, farfield, "farfield"),
-                                 (2, surfaces, "fluid")]:
-            if tags:
-                gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), group)
-        corpus._sizes(c, walls)
+        _, walls, _ = corpus.unmeshed(c)
         import homesh
         homesh.set_quiet(True)
         start = time.perf_counter()
@@ -80,11 +74,6 @@ def child(conn, name, method):
     except Exception as e:  # noqa: BLE001 (recorded, the run goes on)
         row.update(status="error", error=str(e).splitlines()[0][:200])
     conn.send(row)
-
-
-def run_one(name, method, timeout):
-    return corpus.in_child(child, (name, method), timeout,
-                           dict(case=name, method=method, status="timeout"))
 
 
 def plot(rows, cases, path):
@@ -130,7 +119,7 @@ def main():
     rows = []
     for c in cases:
         for m in METHODS:
-            r = corpus.least_time(lambda: run_one(c, m, args.timeout), args.repeat)
+            r = corpus.least_time(lambda: corpus.run_method(child, c, m, args.timeout), args.repeat)
             rows.append(r)
             if r["status"] in ("ok", "invalid"):
                 print(f"{c:26s} {m:11s} {r['aspect']:5d}:1 {r['triangles']:6d} tri "
