@@ -1,13 +1,14 @@
 #!/usr/bin/python3
-"""Crystal-growth Voronoi mesh of a domain with a user metric (thesis chapter 2).
+"""Voronoi mesh of a domain with a user metric (thesis chapter 2).
 
 A channel [0, 2] x [0, 1] with a circular obstacle, built with gmsh.model.occ;
 the user's metric is a Gmsh tensor view (the format of Gmsh's anisotropic
 background meshes: |v|_M = sqrt(v^T M v), eigenvalues 1 / h^2) that asks for
 elements of length H_ALONG along an oblique "shock" line and H_ACROSS across
-it, relaxing to isotropic H_FAR away from it. homesh grows one crystal per
-seed under that metric, meshes the domain with the dual triangulation, checks
-it and writes it with its quality views.
+it, relaxing to isotropic H_FAR away from it. homesh places seeds in that
+metric and meshes the domain with their Delaunay triangulation in it, the dual
+of their Voronoi cells in the metric (dual=grown: of crystals grown under it,
+the thesis' way), checks it and writes it with its quality views.
 
 The metric is honoured where it is asked for: the script prints the median
 length of the mesh's edges measured in the metric (1 is the target) near the
