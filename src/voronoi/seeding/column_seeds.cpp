@@ -77,13 +77,12 @@ ColumnSeeds metric_column_seeds(const CartesianGrid& g, const Eigen::VectorXd& d
     if (!u.allFinite() || !v.allFinite()) continue;
     const bool corner = sharp.empty() ? !(u.dot(v) >= cos_turn) : sharp[s] != 0;
     if (corner) {
-      // A corner. Where the wall turns away from the domain by more than
-      // column_turn (a sharp trailing edge, the domain's angle over 180
-      // degrees), a fan: columns along normals
-      // at most column_turn apart from one segment's to the other's, which
-      // are not spaced from each other (their first seeds lie within the
-      // first cell's height) and whose fine axis the layer metric turns
-      // radially there (wall_layer.h).
+      // A corner. Where the wall turns away from the domain (a sharp
+      // trailing edge, the domain's angle over 180 degrees), a fan: columns
+      // along normals at most column_turn apart from one segment's to the
+      // other's, which are not spaced from each other (their first seeds lie
+      // within the first cell's height) and whose fine axis the layer metric
+      // turns radially there (wall_layer.h).
       const double cross = u.x() * v.y() - u.y() * v.x();
       const double turn = std::acos(std::clamp(u.dot(v), -1.0, 1.0));
       if (cross >= 0) continue;  // the domain's angle below 180 degrees: none

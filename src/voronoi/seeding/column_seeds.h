@@ -29,17 +29,25 @@ struct ColumnSeeds {
 
 /// grid, domain: as for metric_front_seeds; segments: pairs of
 /// boundary_seeds, the domain on their left. A boundary seed s between
-/// segments (p, s) and (s, q) that turn by less than options.column_turn,
-/// where M(s) has semi-axes in a ratio of at least options.column_anisotropy
-/// and its short one within column_turn of the wall's normal n (the
-/// bisector of the two segments' left normals), starts a column along the
-/// short axis e (oriented with n): x_{k+1} = x_k + h e, h = 1 / |e|_M at
-/// x_k + h e / 2 (unit metric length), e following M's short axis at each
-/// point. The columns advance row by row together; a column ends at the
-/// first point where M's ratio is below options.column_end, that lies
+/// segments (p, s) and (s, q), where M(s) has semi-axes in a ratio of at
+/// least options.column_anisotropy, starts
+/// - where the wall is smooth at s (see `sharp`), one column along M's short
+///   axis e, if that is within column_turn of the wall's normal n (the
+///   bisector of the two segments' left normals), oriented with n, e
+///   following M's short axis at each point;
+/// - at a corner where the wall turns away from the domain (its angle over
+///   180 degrees, a sharp trailing edge), a fan: columns along fixed
+///   directions at most column_turn apart from one segment's normal to the
+///   other's, not spaced from each other (their first seeds lie within a
+///   first cell of the corner);
+/// - at a corner where the domain's angle is below 180 degrees, none.
+/// Each step is x_{k+1} = x_k + h e, h = 1 / |e|_M at x_k + h e / 2 (unit
+/// metric length). The columns advance row by row together; a column ends at
+/// the first point where M's ratio is below options.column_end, that lies
 /// outside the domain (beyond 2 grid cells from the wall) or that is closer
-/// than options.front_spacing (metric, mean of the two points' M) to a seed
-/// placed before it, boundary seeds included.
+/// to a seed placed before it (boundary seeds included; in the metric at the
+/// pair's midpoint, SpacedSeeds) than options.front_spacing times the metric
+/// length of the shorter of s's segments, at most 1.
 ///
 /// sharp: per boundary seed, whether the wall has a corner there (the CAD's
 /// tangents turn by more than column_turn); a seed whose segments turn more
