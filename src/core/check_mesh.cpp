@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/input_limits.h"
+#include "element/line_lagrange.h"
 #include "element/quadrature.h"
 
 namespace homesh {
@@ -62,24 +63,17 @@ std::pair<double, double> boundary_area2(const Mesh& m, const Eigen::MatrixXi& n
   const LineQuadratureRule q = line_quadrature(2 * p - 1);
   double area2 = 0;
   std::vector<Eigen::Vector2d> edge(p + 1);
+  std::vector<double> L(p + 1), dL(p + 1);
   for (int k = 0; k < corners; ++k) {
     edge[0] = m.x.col(nodes(k, e));
     for (int j = 1; j < p; ++j) edge[j] = m.x.col(nodes(corners + k * (p - 1) + j - 1, e));
     edge[p] = m.x.col(nodes((k + 1) % corners, e));
     for (Eigen::Index g = 0; g < q.points.size(); ++g) {
-      // The Lagrange basis on t_i = i / p and its derivative at t.
-      const double t = q.points(g);
+      line_lagrange(p, q.points(g), L.data(), dL.data());
       Eigen::Vector2d x = Eigen::Vector2d::Zero(), dx = Eigen::Vector2d::Zero();
       for (int i = 0; i <= p; ++i) {
-        double l = 1, dl = 0;
-        for (int j = 0; j <= p; ++j) {
-          if (j == i) continue;
-          const double den = static_cast<double>(i - j) / p, num = t - static_cast<double>(j) / p;
-          dl = (dl * num + l) / den;
-          l *= num / den;
-        }
-        x += l * edge[i];
-        dx += dl * edge[i];
+        x += L[i] * edge[i];
+        dx += dL[i] * edge[i];
       }
       area2 += q.weights(g) * (x.x() * dx.y() - x.y() * dx.x());
     }

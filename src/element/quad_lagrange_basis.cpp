@@ -3,29 +3,10 @@
 #include <string>
 
 #include "core/error.h"
+#include "element/line_lagrange.h"
 #include "element/quad_reference_nodes.h"
 
 namespace homesh {
-namespace {
-
-// L[i] = L_i(t) and dL[i] = L_i'(t), i = 0..p, the 1D Lagrange polynomials at
-// the equispaced points s / p.
-void line_lagrange(int p, double t, double* L, double* dL) {
-  const double pt = p * t;
-  for (int i = 0; i <= p; ++i) {
-    double value = 1.0, derivative = 0.0;
-    for (int s = 0; s <= p; ++s) {
-      if (s == i) continue;
-      const double f = (pt - s) / (i - s), df = static_cast<double>(p) / (i - s);
-      derivative = derivative * f + value * df;
-      value *= f;
-    }
-    L[i] = value;
-    dL[i] = derivative;
-  }
-}
-
-}  // namespace
 
 QuadLagrangeBasis::QuadLagrangeBasis(int p) : NodalBasis(p) {
   if (p < 1 || p > kMaxOrder)
