@@ -53,21 +53,28 @@ MetricDelaunay metric_delaunay_flips(const Eigen::Matrix2Xd& x,
   MetricDelaunay out;
   const std::vector<int> all = all_triangles(m);
   out.flips = flip_edges_where(m, all, flips_to_delaunay, max_sweeps);
-  // What is left: edges not locally Delaunay (whether or not they can flip).
-  std::vector<char> bad(triangles.size(), 0);
+  // What is left: edges not locally Delaunay (whether or not they can flip),
+  // as the corner triples of their two triangles, then marked in one pass.
+  std::vector<std::array<int, 3>> bad_corners;
   flip_edges_where(
       m, all,
       [&](int a, int b, int c, int d) {
         const Eigen::Vector2d A = x.col(a), B = x.col(b), C = x.col(c), D = x.col(d);
         if (in_metric_circle(A, B, C, D, metric.metric_at(0.25 * (A + B + C + D))))
-          for (Eigen::Index t = 0; t < m.tri.cols(); ++t) {
-            const auto col = m.tri.col(t);
-            const auto has = [&](int v) { return (col.array() == v).any(); };
-            if (has(a) && has(b) && (has(c) || has(d))) bad[t] = 1;
+          for (const std::array<int, 3>& t : {std::array<int, 3>{a, b, c}, {a, b, d}}) {
+            bad_corners.push_back(t);
+            std::sort(bad_corners.back().begin(), bad_corners.back().end());
           }
         return false;
       },
       1);
+  std::sort(bad_corners.begin(), bad_corners.end());
+  std::vector<char> bad(triangles.size(), 0);
+  for (Eigen::Index t = 0; t < m.tri.cols(); ++t) {
+    std::array<int, 3> c = {m.tri(0, t), m.tri(1, t), m.tri(2, t)};
+    std::sort(c.begin(), c.end());
+    bad[t] = std::binary_search(bad_corners.begin(), bad_corners.end(), c);
+  }
   out.not_delaunay = std::count(bad.begin(), bad.end(), 1);
   for (std::size_t t = 0; t < triangles.size(); ++t)
     triangles[t] = {m.tri(0, t), m.tri(1, t), m.tri(2, t)};

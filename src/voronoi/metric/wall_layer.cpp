@@ -96,25 +96,11 @@ WallDistance::Nearest WallDistance::nearest_within(const Eigen::Vector2d& p, dou
   return out;
 }
 
-WallDistance::Nearest WallDistance::nearest(const Eigen::Vector2d& p, double reach) const {
-  // Rings of doubling radius r.
-  for (double r = 4 * half_;; r *= 2) {
-    Nearest out = nearest_within(p, std::min(r, reach));
-    if (out.distance <= r || r >= reach) {
-      if (!(out.distance <= reach)) {
-        out.distance = std::numeric_limits<double>::infinity();
-        out.tangent = Eigen::Vector2d::UnitX();
-      }
-      return out;
-    }
-  }
-}
-
 WallLayer::WallLayer(MetricField iso, const std::vector<Eigen::Matrix2Xd>& walls, double aspect,
                      double thickness, std::vector<double> coarse_distance, double slack)
     : iso_(std::move(iso)),
-      walls_(walls, 0.01 * iso_.min_speed() / aspect, iso_.min_speed()),
       tolerance_(0.01 * iso_.min_speed() / aspect),
+      walls_(walls, tolerance_, iso_.min_speed()),
       aspect_(aspect),
       thickness_(thickness),
       distance_(std::move(coarse_distance)),

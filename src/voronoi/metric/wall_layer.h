@@ -26,13 +26,11 @@ class WallDistance {
   explicit WallDistance(const std::vector<Eigen::Matrix2Xd>& walls, double tolerance = 0,
                         double longest = 0);
   struct Nearest {
-    double distance = 0;  ///< infinity if no segment lies within the reach
+    double distance = 0;  ///< infinity if no segment was found
     Eigen::Vector2d tangent = Eigen::Vector2d::UnitX();
   };
-  /// The nearest segment within `reach` of p.
-  Nearest nearest(const Eigen::Vector2d& p, double reach) const;
-  /// The same when some segment is known to lie within `bound` of p: one
-  /// search of that radius.
+  /// The nearest segment to p if it lies within `bound` of p (one search of
+  /// that radius); else some farther one, or none (distance infinity).
   Nearest nearest_within(const Eigen::Vector2d& p, double bound) const;
   int segments() const { return static_cast<int>(a_.size()); }
 
@@ -63,8 +61,8 @@ class WallLayer {
 
  private:
   MetricField iso_;
+  double tolerance_;  // of the walls' chords (before walls_, which takes it)
   WallDistance walls_;
-  double tolerance_;  // of the walls' chords
   double aspect_, thickness_;
   std::vector<double> distance_;  // at iso_'s coarse nodes
   double slack_;

@@ -59,6 +59,28 @@ TEST_CASE(
   const MetricField metric = MetricField::constant(M);
   const std::vector<std::array<int, 2>> square = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
   std::vector<std::array<int, 3>> tri = cgal_constrained_triangles(x, square, {});
+  // With no sweep, the triangles left with an edge not Delaunay in M, as
+  // counted edge by edge here.
+  std::vector<std::array<int, 3>> unswept = tri;
+  const MetricDelaunay none = metric_delaunay_flips(x, unswept, square, metric, 0);
+  CHECK(none.flips == 0);
+  CHECK(unswept == tri);
+  std::vector<char> bad(tri.size(), 0);
+  for (std::size_t e = 0; e < tri.size(); ++e)
+    for (std::size_t f = 0; f < tri.size(); ++f)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const int a = tri[e][i], b = tri[e][(i + 1) % 3];
+          if (tri[f][j] != b || tri[f][(j + 1) % 3] != a) continue;
+          const int c = tri[e][(i + 2) % 3], dd = tri[f][(j + 2) % 3];
+          if (in_metric_circle(
+                  x.col(a), x.col(b), x.col(c), x.col(dd),
+                  metric.metric_at(0.25 * (x.col(a) + x.col(b) + x.col(c) + x.col(dd)))))
+            bad[e] = bad[f] = 1;
+        }
+  const long brute = std::count(bad.begin(), bad.end(), 1);
+  CHECK(brute > 100);
+  CHECK(none.not_delaunay == brute);
   const MetricDelaunay d = metric_delaunay_flips(x, tri, square, metric);
   CHECK(d.flips > 100);
   CHECK(d.not_delaunay == 0);

@@ -16,18 +16,20 @@ TEST_CASE("wall distance: to the nearest segment exactly, radial round a polylin
       0, 0, 0, 0, 0, 0.25, 0.5, 0.75, 1;
   const WallDistance d({wall});
   // Between samples: the perpendicular distance, the tangent along the wall.
-  WallDistance::Nearest n = d.nearest({0.3, 1e-4}, 1.0);
+  WallDistance::Nearest n = d.nearest_within({0.3, 1e-4}, 1.0);
   CHECK(n.distance == Approx(1e-4).epsilon(1e-9));
   CHECK(std::abs(n.tangent.x()) == Approx(1.0));
-  n = d.nearest({0.9, 0.6}, 1.0);
+  n = d.nearest_within({0.9, 0.6}, 1.0);
   CHECK(n.distance == Approx(0.1));
   CHECK(std::abs(n.tangent.y()) == Approx(1.0));
   // Beyond the end (0, 0): radial, the tangent across (p - end).
-  n = d.nearest({-0.3, 0.4}, 1.0);
+  n = d.nearest_within({-0.3, 0.4}, 1.0);
   CHECK(n.distance == Approx(0.5));
   CHECK(std::abs(n.tangent.dot(Eigen::Vector2d(-0.6, 0.8))) < 1e-12);
-  // Nothing within the reach.
-  CHECK(d.nearest({-3, 3}, 1.0).distance == std::numeric_limits<double>::infinity());
+  // Nothing within the bound: the segment found, if any, lies beyond it; with
+  // a bound past it, the nearest, (0, 0) at sqrt(18) from (-3, 3).
+  CHECK_FALSE(d.nearest_within({-3, 3}, 1.0).distance < 1.0);
+  CHECK(d.nearest_within({-3, 3}, 5.0).distance == Approx(std::sqrt(18.0)));
   CHECK_THROWS(WallDistance({Eigen::Matrix2Xd::Zero(2, 3)}));
 }
 
