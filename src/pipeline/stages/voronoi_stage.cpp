@@ -1,6 +1,7 @@
 #include "pipeline/stages/voronoi_stage.h"
 
 #include <fmt/core.h>
+#include <gmsh.h>
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +11,7 @@
 #include "gmsh/boundary_sampling.h"
 #include "gmsh/gmsh_call.h"
 #include "gmsh/metric_view.h"
+#include "gmsh/option_scope.h"
 #include "pipeline/stages/mesh_stage.h"
 #include "voronoi/engines/voronoi_engines.h"
 #include "voronoi/metric/size_metric.h"
@@ -24,17 +26,30 @@ using Clock = std::chrono::steady_clock;
 
 constexpr int kCurveSamples = 2000;  // fine samples per boundary curve
 constexpr int kCoarseMax = 400;      // coarse metric grid nodes along the longer side, at most
+// The iso metric's sizes come from Gmsh's mesh at this many times the sizes
+// asked for, its edge lengths divided by it: Gmsh multiplies every size (of
+// the points, the curvature, the fields, after Mesh.MeshSizeMin/Max) by
+// Mesh.MeshSizeFactor last (BGM_MeshSize in its BackgroundMeshTools.cpp), so
+// the coarser mesh has the same size field, at a quarter of the triangles
+// and of Gmsh's time. On the plate with a hole at 3e4 triangles that mesh
+// was 0.85 s of the stage's 2.4 s (docs/voronoi.md). Where it has fewer than
+// kReferenceMinTriangles the shapes bound its edges more than the sizes do
+// (the plate at twice its sizes: 22 triangles, whose edges made 1.7 times
+// the triangles asked for), and the mesh at the sizes asked for is taken.
+constexpr double kReferenceCoarsening = 2;
+constexpr long kReferenceMinTriangles = 100;
 
 // The metric field of option `metric`: iso (sizes of Gmsh's default mesh,
 // `reference`), bl (that, fine across the walls), a Gmsh tensor view (probed
 // on the coarse grid of iso) or a file.
-MetricField make_metric(const std::string& metric, const Mesh& reference, const Eigen::Vector2d& lo,
-                        const Eigen::Vector2d& hi, const SeededBoundary* walls_from,
-                        const std::vector<int>& walls, const BoundaryLayerOptions& layer) {
+MetricField make_metric(const std::string& metric, const Mesh& reference, double coarsening,
+                        const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                        const SeededBoundary* walls_from, const std::vector<int>& walls,
+                        const BoundaryLayerOptions& layer) {
   const bool view = gmsh_adapter::names_metric_view(metric);
   if (metric != "iso" && metric != "bl" && !view) return read_metric_file(metric);
   const Eigen::MatrixXi tri = reference.tri.topRows(3);
-  const Eigen::VectorXd h = mean_edge_length(reference.x, tri);
+  const Eigen::VectorXd h = mean_edge_length(reference.x, tri) / coarsening;
   const double h_min = (h.array() > 0).select(h.array(), h.maxCoeff()).minCoeff();
   const int n = std::clamp(static_cast<int>(std::ceil((hi - lo).maxCoeff() / (0.5 * h_min))) + 1,
                            16, kCoarseMax);
@@ -131,8 +146,20 @@ void run(Context& ctx, const VoronoiStageOptions& o) {
   ctx.require_cad("voronoi");
   const auto start = Clock::now();
   MeshOptions sizes;
-  sizes.factor = o.factor;
-  const Mesh reference = gmsh_mesh(ctx.input, sizes);
+  double factor = o.factor, coarsening = kReferenceCoarsening;
+  gmsh_adapter::OptionScope flexible;
+  gmsh_adapter::gmsh_call("stage 'voronoi' on " + ctx.input, [&] {
+    if (factor <= 0) gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
+    // Transfinite curves take the factor too (their node counts divided by it).
+    flexible.set("Mesh.FlexibleTransfinite", 1);
+  });
+  sizes.factor = coarsening * factor;
+  Mesh reference = gmsh_mesh(ctx.input, sizes);
+  if (reference.num_triangles() < kReferenceMinTriangles) {
+    coarsening = 1;
+    sizes.factor = factor;
+    reference = gmsh_mesh(ctx.input, sizes);
+  }
 
   SeededBoundary boundary;
   MetricField metric = MetricField::constant(Eigen::Matrix2d::Identity());
@@ -161,7 +188,7 @@ void run(Context& ctx, const VoronoiStageOptions& o) {
             "across every boundary curve ({}) as a wall",
             ctx.input, walls.size());
     }
-    metric = make_metric(o.metric, reference, lo, hi, &shape, walls, o.layer);
+    metric = make_metric(o.metric, reference, coarsening, lo, hi, &shape, walls, o.layer);
     boundary = gmsh_adapter::seed_boundary(
         kCurveSamples, [&](const Eigen::VectorXd& u, const Eigen::Matrix2Xd& x, bool closed) {
           return divide_by_metric_length(u, x, metric, closed ? 3 : 1);
@@ -221,18 +248,26 @@ Stage voronoi_stage() {
         "factor on the sizes of Gmsh's default mesh, which the iso metric follows "
         "(Mesh.MeshSizeFactor; 0 = the model's, e.g. set by the .geo or the script)");
   t.add("seeds", &O::seeds, text(),
-        "auto (front rows, then Poisson-disc in the metric) | FILE (interior seeds, one 'x y' "
+        "auto (front rows, then lattices and Poisson-disc in the metric, as `interior`) | FILE "
+        "(interior seeds, one 'x y' "
         "per line; the boundary seeds are placed from the metric)");
   t.add(
       "front", [](O& o) -> int& { return o.mesher.seeding.front_rows; },
       integer(0, 1000, {{"all", kAllFrontRows}}),
       "with auto seeds: rows of seeds advancing from the boundary, each at the apexes of "
       "the unit triangles (in the metric) on the row before (Rebay's frontal placement), "
-      "and a seed splitting each corner of 75-140 degrees; Poisson-disc seeds fill where "
+      "and a seed splitting each corner of 75-140 degrees; the `interior` seeds fill where "
       "the fronts meet, Lloyd's iteration holds the first row | N: N rows | 0: none, "
-      "Poisson-disc seeds only. Where the metric is at least 2:1 at a wall, columns come "
+      "`interior` seeds only. Where the metric is at least 2:1 at a wall, columns come "
       "first: seeds on the wall's normals at unit steps of the metric up to where it is "
       "below 1.5:1, a fan of them at sharp convex corners, held by Lloyd and the clean-up");
+  t.add(
+      "interior", [](O& o) -> std::string& { return o.mesher.seeding.interior; },
+      one_of({"lattice", "poisson"}),
+      "with auto seeds, where the front rows leave off: lattice (hexagonal lattices of unit "
+      "edges in the metric grown breadth first from the seeds before them, the direction "
+      "carried from seed to seed as in Gmsh's packing of parallelograms, then Poisson-disc "
+      "seeds in the gaps where they meet) | poisson (Poisson-disc seeds only)");
   t.add(
       "lloyd", [](O& o) -> int& { return o.mesher.lloyd.iterations; },
       integer(0, 100, {{"auto", kAutoIterations}}),

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "voronoi/grid/cartesian_grid.h"
@@ -87,6 +88,23 @@ class SpacedSeeds {
       if (v.squaredNorm() >= 4 * s2 * h * h) return true;
       return v.dot(metric_.metric_at(0.5 * (p + q)) * v) >= s2;
     });
+  }
+
+  // The seed other than q nearest to it within `reach` (Euclidean), in the
+  // metric Mq; q itself if there is none.
+  Eigen::Vector2d nearest(const Eigen::Vector2d& q, const Eigen::Matrix2d& Mq, double reach) const {
+    Eigen::Vector2d best = q;
+    double d_best = std::numeric_limits<double>::infinity();
+    buckets_.all_of_near(q, reach, [&](const Eigen::Vector2d& p) {
+      const Eigen::Vector2d v = p - q;
+      const double d = v.dot(Mq * v);
+      if (d > 0 && d < d_best) {
+        d_best = d;
+        best = p;
+      }
+      return true;
+    });
+    return best;
   }
 
  private:

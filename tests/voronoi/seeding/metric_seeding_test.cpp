@@ -3,6 +3,7 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "voronoi/cleanup/metric_smoothing.h"
@@ -17,31 +18,79 @@ TEST_CASE("Poisson-disc seeds follow the metric", "[voronoi][seeding]") {
   square << 0, 1, 1, 0,  //
       0, 0, 1, 1;
   const Eigen::VectorXd domain = loop_signed_distance(g, {square}, 0.1);
-  for (const auto& [hx, hy] : {std::pair<double, double>{0.05, 0.05}, {0.1, 0.02}}) {
-    INFO("sizes " << hx << " by " << hy);
-    const Eigen::Matrix2d M = metric_from_axes(0.0, hx, hy);
-    const SeedingOptions o;
-    const Eigen::Matrix2Xd s =
-        metric_interior_seeds(g, domain, MetricField::constant(M), Eigen::Matrix2Xd(2, 0), o);
-    // Spacing at least o.spacing in the metric, o.boundary_gap from the walls.
-    double closest = 1e300;
-    for (int a = 0; a < s.cols(); ++a) {
-      const Eigen::Vector2d p = s.col(a);
-      CHECK(std::min(p.x(), 1 - p.x()) / hx >= o.boundary_gap - 1e-9);
-      CHECK(std::min(p.y(), 1 - p.y()) / hy >= o.boundary_gap - 1e-9);
-      for (int b = a + 1; b < s.cols(); ++b) {
-        const Eigen::Vector2d v = s.col(b) - p;
-        closest = std::min(closest, std::sqrt(v.dot(M * v)));
+  for (const auto& [hx, hy] : {std::pair<double, double>{0.05, 0.05}, {0.1, 0.02}})
+    for (const std::string interior : {"lattice", "poisson"}) {
+      INFO("sizes " << hx << " by " << hy << ", interior " << interior);
+      const Eigen::Matrix2d M = metric_from_axes(0.0, hx, hy);
+      SeedingOptions o;
+      o.interior = interior;
+      const Eigen::Matrix2Xd s =
+          metric_interior_seeds(g, domain, MetricField::constant(M), Eigen::Matrix2Xd(2, 0), o);
+      // Spacing at least o.spacing in the metric, o.boundary_gap from the walls.
+      double closest = 1e300;
+      for (int a = 0; a < s.cols(); ++a) {
+        const Eigen::Vector2d p = s.col(a);
+        CHECK(std::min(p.x(), 1 - p.x()) / hx >= o.boundary_gap - 1e-9);
+        CHECK(std::min(p.y(), 1 - p.y()) / hy >= o.boundary_gap - 1e-9);
+        for (int b = a + 1; b < s.cols(); ++b) {
+          const Eigen::Vector2d v = s.col(b) - p;
+          closest = std::min(closest, std::sqrt(v.dot(M * v)));
+        }
       }
+      CHECK(closest >= o.spacing - 1e-9);
+      // Maximal: the metric area per seed, in the square less the boundary gap,
+      // is that of a disc packing of this spacing, 0.6 to 1.5 times spacing^2.
+      const double gap_x = 2 * o.boundary_gap * hx, gap_y = 2 * o.boundary_gap * hy;
+      const double per_seed = (1 - gap_x) * (1 - gap_y) / (hx * hy) / static_cast<double>(s.cols());
+      CHECK(per_seed > 0.6 * o.spacing * o.spacing);
+      CHECK(per_seed < 1.5 * o.spacing * o.spacing);
     }
-    CHECK(closest >= o.spacing - 1e-9);
-    // Maximal: the metric area per seed, in the square less the boundary gap,
-    // is that of a disc packing of this spacing, 0.6 to 1.5 times spacing^2.
-    const double gap_x = 2 * o.boundary_gap * hx, gap_y = 2 * o.boundary_gap * hy;
-    const double per_seed = (1 - gap_x) * (1 - gap_y) / (hx * hy) / static_cast<double>(s.cols());
-    CHECK(per_seed > 0.6 * o.spacing * o.spacing);
-    CHECK(per_seed < 1.5 * o.spacing * o.spacing);
+}
+
+TEST_CASE("lattice seeds: hexagonal in a constant metric, where Poisson-disc seeds are not",
+          "[voronoi][seeding]") {
+  // The unit square, sizes 0.04 isotropic, then 0.08 by 0.02 turned by 30
+  // degrees; no boundary seeds, so the lattice grows from one seed.
+  const CartesianGrid g = CartesianGrid::spanning({0, 0}, {1, 1}, 201, 201);
+  Eigen::Matrix2Xd square(2, 4);
+  square << 0, 1, 1, 0,  //
+      0, 0, 1, 1;
+  const Eigen::VectorXd domain = loop_signed_distance(g, {square}, 0.1);
+  for (const auto& [hx, hy] : {std::pair<double, double>{0.04, 0.04}, {0.08, 0.02}}) {
+    const Eigen::Matrix2d M = metric_from_axes(M_PI / 6, hx, hy);
+    // The share of seeds with six others at unit metric distance (1e-9).
+    const auto hexagonal_share = [&](const std::string& interior) {
+      SeedingOptions o;
+      o.interior = interior;
+      const Eigen::Matrix2Xd s =
+          metric_interior_seeds(g, domain, MetricField::constant(M), Eigen::Matrix2Xd(2, 0), o);
+      int hexagonal = 0;
+      for (int a = 0; a < s.cols(); ++a) {
+        int unit = 0;
+        for (int b = 0; b < s.cols(); ++b) {
+          const Eigen::Vector2d v = s.col(b) - s.col(a);
+          if (b != a && std::abs(std::sqrt(v.dot(M * v)) - 1) < 1e-9) ++unit;
+        }
+        hexagonal += unit == 6;
+      }
+      return static_cast<double>(hexagonal) / static_cast<double>(s.cols());
+    };
+    INFO("sizes " << hx << " by " << hy);
+    // Only the seeds within a size of the walls, and the Poisson-disc ones
+    // in the gaps there, miss neighbours.
+    CHECK(hexagonal_share("lattice") > 0.7);
+    CHECK(hexagonal_share("poisson") < 0.01);
   }
+}
+
+TEST_CASE("interior seeds: an unknown kind is an error", "[voronoi][seeding]") {
+  const CartesianGrid g = CartesianGrid::spanning({0, 0}, {1, 1}, 11, 11);
+  SeedingOptions o;
+  o.interior = "hexagonal";
+  CHECK_THROWS_WITH(metric_interior_seeds(g, Eigen::VectorXd(),
+                                          MetricField::constant(Eigen::Matrix2d::Identity()),
+                                          Eigen::Matrix2Xd(2, 0), o),
+                    Catch::Contains("interior 'hexagonal'"));
 }
 
 namespace {
