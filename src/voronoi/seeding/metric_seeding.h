@@ -56,7 +56,8 @@ struct SeedingOptions {
   double column_turn = 30;  ///< ... and where the wall turns by less (degrees)
   /// The seeds where the front rows and columns leave off | lattice:
   /// hexagonal lattices of unit metric edges grown breadth first from the
-  /// seeds before them, then Poisson-disc seeds in the gaps where they meet
+  /// seeds before them, then Poisson-disc seeds in the gaps where they meet,
+  /// where the metric is isotropic everywhere (Poisson-disc seeds elsewhere)
   /// | poisson: Poisson-disc seeds only. On the corpus (docs/voronoi.md) the
   /// lattice leaves fewer interior nodes of valence other than 6 (11 % against
   /// 19 % on the plate at 3e4 triangles), which keeps the mean shape at or

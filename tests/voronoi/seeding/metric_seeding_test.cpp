@@ -47,7 +47,7 @@ TEST_CASE("Poisson-disc seeds follow the metric", "[voronoi][seeding]") {
     }
 }
 
-TEST_CASE("lattice seeds: hexagonal in a constant metric, where Poisson-disc seeds are not",
+TEST_CASE("lattice seeds: hexagonal in an isotropic metric, Poisson-disc in an anisotropic one",
           "[voronoi][seeding]") {
   // The unit square, sizes 0.04 isotropic, then 0.08 by 0.02 turned by 30
   // degrees; no boundary seeds, so the lattice grows from one seed.
@@ -56,31 +56,32 @@ TEST_CASE("lattice seeds: hexagonal in a constant metric, where Poisson-disc see
   square << 0, 1, 1, 0,  //
       0, 0, 1, 1;
   const Eigen::VectorXd domain = loop_signed_distance(g, {square}, 0.1);
-  for (const auto& [hx, hy] : {std::pair<double, double>{0.04, 0.04}, {0.08, 0.02}}) {
-    const Eigen::Matrix2d M = metric_from_axes(M_PI / 6, hx, hy);
-    // The share of seeds with six others at unit metric distance (1e-9).
-    const auto hexagonal_share = [&](const std::string& interior) {
-      SeedingOptions o;
-      o.interior = interior;
-      const Eigen::Matrix2Xd s =
-          metric_interior_seeds(g, domain, MetricField::constant(M), Eigen::Matrix2Xd(2, 0), o);
-      int hexagonal = 0;
-      for (int a = 0; a < s.cols(); ++a) {
-        int unit = 0;
-        for (int b = 0; b < s.cols(); ++b) {
-          const Eigen::Vector2d v = s.col(b) - s.col(a);
-          if (b != a && std::abs(std::sqrt(v.dot(M * v)) - 1) < 1e-9) ++unit;
-        }
-        hexagonal += unit == 6;
+  // The share of seeds with six others at unit metric distance (1e-9).
+  const auto hexagonal_share = [&](const Eigen::Matrix2d& M, const std::string& interior) {
+    SeedingOptions o;
+    o.interior = interior;
+    const Eigen::Matrix2Xd s =
+        metric_interior_seeds(g, domain, MetricField::constant(M), Eigen::Matrix2Xd(2, 0), o);
+    int hexagonal = 0;
+    for (int a = 0; a < s.cols(); ++a) {
+      int unit = 0;
+      for (int b = 0; b < s.cols(); ++b) {
+        const Eigen::Vector2d v = s.col(b) - s.col(a);
+        if (b != a && std::abs(std::sqrt(v.dot(M * v)) - 1) < 1e-9) ++unit;
       }
-      return static_cast<double>(hexagonal) / static_cast<double>(s.cols());
-    };
-    INFO("sizes " << hx << " by " << hy);
-    // Only the seeds within a size of the walls, and the Poisson-disc ones
-    // in the gaps there, miss neighbours.
-    CHECK(hexagonal_share("lattice") > 0.7);
-    CHECK(hexagonal_share("poisson") < 0.01);
-  }
+      hexagonal += unit == 6;
+    }
+    return static_cast<double>(hexagonal) / static_cast<double>(s.cols());
+  };
+  const Eigen::Matrix2d iso = metric_from_axes(M_PI / 6, 0.04, 0.04);
+  // Only the seeds within a size of the walls, and the Poisson-disc ones in
+  // the gaps there, miss neighbours (measured 0.85).
+  CHECK(hexagonal_share(iso, "lattice") > 0.7);
+  CHECK(hexagonal_share(iso, "poisson") < 0.01);
+  // Anisotropic: Poisson-disc seeds either way (the lattice made slivers
+  // above metric=bl layers).
+  const Eigen::Matrix2d aniso = metric_from_axes(M_PI / 6, 0.08, 0.02);
+  CHECK(hexagonal_share(aniso, "lattice") < 0.01);
 }
 
 TEST_CASE("interior seeds: an unknown kind is an error", "[voronoi][seeding]") {
