@@ -34,11 +34,11 @@ constexpr int kCoarseMax = 400;      // coarse metric grid nodes along the longe
 // and of Gmsh's time. On the plate with a hole at 3e4 triangles that mesh
 // was 0.85 s of the stage's 2.4 s (docs/voronoi.md). Where it has fewer than
 // kReferenceMinTriangles the shapes bound its edges more than the sizes do
-// (the plate at twice its sizes: 22 triangles, whose edges made 1.7 times
+// (the plate at factor 2, 4 here: 44 triangles, whose edges made 1.7 times
 // the triangles asked for), and the mesh at the sizes asked for is taken.
 // So it is above kReferenceMaxTriangles (about 2e4 triangles asked for): the
 // coarser sizes cost the mean shape 0.0007-0.002 there (plate at 3e4 and
-// 1.2e5 triangles: 0.9889 and 0.9909 against 0.9896 and 0.9931, frontal's
+// 1.2e5 triangles: 0.9889 and 0.9909 against 0.9896 and 0.9926, frontal's
 // 0.9890 and 0.9912), and Gmsh's mesh is a smaller share of the time.
 constexpr double kReferenceCoarsening = 2;
 constexpr long kReferenceMinTriangles = 100, kReferenceMaxTriangles = 5000;
@@ -150,17 +150,21 @@ void run(Context& ctx, const VoronoiStageOptions& o) {
   ctx.require_cad("voronoi");
   const auto start = Clock::now();
   MeshOptions sizes;
-  double factor = o.factor, coarsening = kReferenceCoarsening;
+  // With metric=bl the full mesh: seeding the layer takes most of the time
+  // there, and the coarser sizes moved the curved worst of the corpus's
+  // layers by -0.09 to +0.03 (naca23015_a12_bl_1e-5 at p = 3: 0.836 against
+  // 0.924; docs/voronoi.md).
+  double factor = o.factor, coarsening = o.metric == "bl" ? 1 : kReferenceCoarsening;
   gmsh_adapter::OptionScope flexible;
   gmsh_adapter::gmsh_call("stage 'voronoi' on " + ctx.input, [&] {
     if (factor <= 0) gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
     // Transfinite curves take the factor too (their node counts divided by it).
-    flexible.set("Mesh.FlexibleTransfinite", 1);
+    if (coarsening > 1) flexible.set("Mesh.FlexibleTransfinite", 1);
   });
   sizes.factor = coarsening * factor;
   Mesh reference = gmsh_mesh(ctx.input, sizes);
-  if (reference.num_triangles() < kReferenceMinTriangles ||
-      reference.num_triangles() > kReferenceMaxTriangles) {
+  if (coarsening > 1 && (reference.num_triangles() < kReferenceMinTriangles ||
+                         reference.num_triangles() > kReferenceMaxTriangles)) {
     coarsening = 1;
     sizes.factor = factor;
     reference = gmsh_mesh(ctx.input, sizes);
