@@ -1,5 +1,6 @@
 #include "voronoi/seeding/metric_seeding.h"
 
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -11,31 +12,47 @@
 
 using namespace homesh;
 
-TEST_CASE("Poisson-disc seeds follow the metric", "[voronoi][seeding]") {
-  // The unit square, size 0.05 isotropic, then 0.1 along x by 0.02 along y.
+namespace {
+
+// The interior seeds of the unit square in the constant metric M, with no
+// boundary seeds (they grow from its deepest grid node).
+Eigen::Matrix2Xd square_seeds(const Eigen::Matrix2d& M, const SeedingOptions& o) {
   const CartesianGrid g = CartesianGrid::spanning({0, 0}, {1, 1}, 201, 201);
   Eigen::Matrix2Xd square(2, 4);
   square << 0, 1, 1, 0,  //
       0, 0, 1, 1;
-  const Eigen::VectorXd domain = loop_signed_distance(g, {square}, 0.1);
+  return metric_interior_seeds(g, loop_signed_distance(g, {square}, 0.1), MetricField::constant(M),
+                               Eigen::Matrix2Xd(2, 0), o);
+}
+
+// The metric distances from seed a of s to every other seed.
+std::vector<double> distances_from(const Eigen::Matrix2Xd& s, int a, const Eigen::Matrix2d& M) {
+  std::vector<double> out;
+  for (int b = 0; b < s.cols(); ++b) {
+    const Eigen::Vector2d v = s.col(b) - s.col(a);
+    if (b != a) out.push_back(std::sqrt(v.dot(M * v)));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Poisson-disc seeds follow the metric", "[voronoi][seeding]") {
+  // The unit square, size 0.05 isotropic, then 0.1 along x by 0.02 along y.
   for (const auto& [hx, hy] : {std::pair<double, double>{0.05, 0.05}, {0.1, 0.02}})
     for (const std::string interior : {"lattice", "poisson"}) {
       INFO("sizes " << hx << " by " << hy << ", interior " << interior);
       const Eigen::Matrix2d M = metric_from_axes(0.0, hx, hy);
       SeedingOptions o;
       o.interior = interior;
-      const Eigen::Matrix2Xd s =
-          metric_interior_seeds(g, domain, MetricField::constant(M), Eigen::Matrix2Xd(2, 0), o);
+      const Eigen::Matrix2Xd s = square_seeds(M, o);
       // Spacing at least o.spacing in the metric, o.boundary_gap from the walls.
       double closest = 1e300;
       for (int a = 0; a < s.cols(); ++a) {
         const Eigen::Vector2d p = s.col(a);
         CHECK(std::min(p.x(), 1 - p.x()) / hx >= o.boundary_gap - 1e-9);
         CHECK(std::min(p.y(), 1 - p.y()) / hy >= o.boundary_gap - 1e-9);
-        for (int b = a + 1; b < s.cols(); ++b) {
-          const Eigen::Vector2d v = s.col(b) - p;
-          closest = std::min(closest, std::sqrt(v.dot(M * v)));
-        }
+        for (const double d : distances_from(s, a, M)) closest = std::min(closest, d);
       }
       CHECK(closest >= o.spacing - 1e-9);
       // Maximal: the metric area per seed, in the square less the boundary gap,
@@ -51,25 +68,16 @@ TEST_CASE("lattice seeds: hexagonal in an isotropic metric, Poisson-disc in an a
           "[voronoi][seeding]") {
   // The unit square, sizes 0.04 isotropic, then 0.08 by 0.02 turned by 30
   // degrees; no boundary seeds, so the lattice grows from one seed.
-  const CartesianGrid g = CartesianGrid::spanning({0, 0}, {1, 1}, 201, 201);
-  Eigen::Matrix2Xd square(2, 4);
-  square << 0, 1, 1, 0,  //
-      0, 0, 1, 1;
-  const Eigen::VectorXd domain = loop_signed_distance(g, {square}, 0.1);
   // The share of seeds with six others at unit metric distance (1e-9).
-  const auto hexagonal_share = [&](const Eigen::Matrix2d& M, const std::string& interior) {
+  const auto hexagonal_share = [](const Eigen::Matrix2d& M, const std::string& interior) {
     SeedingOptions o;
     o.interior = interior;
-    const Eigen::Matrix2Xd s =
-        metric_interior_seeds(g, domain, MetricField::constant(M), Eigen::Matrix2Xd(2, 0), o);
+    const Eigen::Matrix2Xd s = square_seeds(M, o);
     int hexagonal = 0;
     for (int a = 0; a < s.cols(); ++a) {
-      int unit = 0;
-      for (int b = 0; b < s.cols(); ++b) {
-        const Eigen::Vector2d v = s.col(b) - s.col(a);
-        if (b != a && std::abs(std::sqrt(v.dot(M * v)) - 1) < 1e-9) ++unit;
-      }
-      hexagonal += unit == 6;
+      const std::vector<double> d = distances_from(s, a, M);
+      hexagonal +=
+          std::count_if(d.begin(), d.end(), [](double x) { return std::abs(x - 1) < 1e-9; }) == 6;
     }
     return static_cast<double>(hexagonal) / static_cast<double>(s.cols());
   };
