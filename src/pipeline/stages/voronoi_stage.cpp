@@ -257,9 +257,9 @@ Stage voronoi_stage() {
         "factor on the sizes of Gmsh's default mesh, which the iso metric follows "
         "(Mesh.MeshSizeFactor; 0 = the model's, e.g. set by the .geo or the script)");
   t.add("seeds", &O::seeds, text(),
-        "auto (front rows, then lattices and Poisson-disc in the metric, as `interior`) | FILE "
-        "(interior seeds, one 'x y' "
-        "per line; the boundary seeds are placed from the metric)");
+        "auto (front rows, then lattices and Poisson-disc in the metric, as `interior`) | "
+        "FILE (interior seeds, one 'x y' per line; the boundary seeds are placed from the "
+        "metric)");
   t.add(
       "front", [](O& o) -> int& { return o.mesher.seeding.front_rows; },
       integer(0, 1000, {{"all", kAllFrontRows}}),
@@ -276,7 +276,8 @@ Stage voronoi_stage() {
       "with auto seeds, where the front rows leave off: lattice (hexagonal lattices of unit "
       "edges in the metric grown breadth first from the seeds before them, the direction "
       "carried from seed to seed as in Gmsh's packing of parallelograms, then Poisson-disc "
-      "seeds in the gaps where they meet) | poisson (Poisson-disc seeds only)");
+      "seeds in the gaps where they meet; where the metric is isotropic everywhere, "
+      "Poisson-disc seeds elsewhere) | poisson (Poisson-disc seeds only)");
   t.add(
       "lloyd", [](O& o) -> int& { return o.mesher.lloyd.iterations; },
       integer(0, 100, {{"auto", kAutoIterations}}),

@@ -11,7 +11,8 @@
 // follows the metric: edges of its metric Delaunay triangulation have metric
 // lengths between `spacing` and about 2 `spacing`.
 //
-// Before it, by default, lattices: breadth first from the seeds given, each
+// Before it, by default and where the metric is isotropic everywhere,
+// lattices: breadth first from the seeds given, each
 // seed throws its first candidates at the six directions of a hexagonal
 // lattice of unit metric edges (in the unit ball of M there), turned as the
 // edge from its parent, so that the lattice of the front rows carries on
