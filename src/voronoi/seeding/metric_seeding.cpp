@@ -183,12 +183,16 @@ Eigen::Matrix2Xd metric_interior_seeds(const CartesianGrid& g, const Eigen::Vect
   std::mt19937 gen(o.random_seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<Eigen::Vector2d> interior;
+  // How far the seeds that might be within a candidate's annulus lie, from
+  // the metric's eigenvalues at it (twice its longest semi-axis).
+  const auto reach_of = [&](const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>& eig) {
+    return 2.0 * o.spacing * (1 + o.annulus) / std::sqrt(eig.eigenvalues()(0));
+  };
   const auto try_add = [&](const Eigen::Vector2d& q) {
     // The spacing first: it rejects most candidates, and costs less.
     const Eigen::Matrix2d Mq = metric.metric_at(q);
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(Mq);
-    const double reach = 2.0 * o.spacing * (1 + o.annulus) / std::sqrt(eig.eigenvalues()(0));
-    if (!buckets.spaced(q, Mq, o.spacing, reach)) return false;
+    if (!buckets.spaced(q, Mq, o.spacing, reach_of(eig))) return false;
     if (!test.ball_inside(q, eig.operatorInverseSqrt(), o.boundary_gap)) return false;
     buckets.add(q, Mq);
     active.push_back(q);
@@ -218,9 +222,7 @@ Eigen::Matrix2Xd metric_interior_seeds(const CartesianGrid& g, const Eigen::Vect
     for (const Eigen::Vector2d& p : active) {
       const Eigen::Matrix2d Mp = metric.metric_at(p);
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(Mp);
-      const Eigen::Vector2d v =
-          eig.operatorSqrt() *
-          (buckets.nearest(p, Mp, 2.0 * o.spacing * (1 + o.annulus) * metric_max_speed(Mp)) - p);
+      const Eigen::Vector2d v = eig.operatorSqrt() * (buckets.nearest(p, Mp, reach_of(eig)) - p);
       turn.push_back(v.squaredNorm() > 0 ? std::atan2(v.y(), v.x()) : 0.0);
     }
     for (std::size_t head = 0; head < active.size(); ++head) {
