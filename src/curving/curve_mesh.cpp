@@ -1,6 +1,8 @@
 #include "curving/curve_mesh.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "core/raise_order.h"
 #include "curving/interior_blending.h"
@@ -25,6 +27,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   Eigen::Matrix2Xd target = place(raised);
   const std::vector<bool> boundary = boundary_nodes(raised);
   CurveResult r;
+  r.place_seconds = since(start);
   std::vector<int> local_region;  // step 1's poor elements and their rings
   Mesh placed;                    // step 1's best guess, if step 1 ran
   const std::vector<bool> vertex = vertex_nodes(raised);
@@ -60,10 +63,19 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
         for (const int n : element_node_indices(placed, e)) poor_nodes[n] = true;
     return moving_region(placed, poor_nodes, opt.placed_rings);
   };
+  // The polish's bar: `polish`, or none (0) where more than polish_share of the elements are
+  // below it.
+  auto polish_bar = [&](const MeshValidity& v) {
+    const int n = placed.num_elements_2d();
+    int below = 0;
+    for (int e = 0; e < n; ++e) below += v.ratio(e) < opt.polish;
+    return below <= opt.polish_share * n ? opt.polish : 0.0;
+  };
 
   // 1. Placed: the boundary nodes at their targets, the interior blended from the wall
   // elements' edges, or else moved with the wall near it; the better guess is kept.
   if (opt.accept_placed <= 1) {
+    const auto guessing = std::chrono::steady_clock::now();
     Mesh on_wall = raised;
     for (int i = 0; i < on_wall.num_nodes(); ++i)
       if (boundary[i]) on_wall.x.col(i) = target.col(i);
@@ -91,13 +103,15 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
       if (v.invalid == 0 && v.worst >= opt.accept_placed) break;
     }
     r.placed_worst = v.invalid == 0 ? v.worst : 0;
+    r.guess_seconds = since(guessing);
     if (v.invalid == 0 && v.worst >= opt.accept_placed) {
       r.placed = true;
       r.worst_ratio = v.worst;
       // Good enough, not yet `polish`: a solve round the elements below it, kept if better.
-      if (opt.placed_rings > 0 && v.worst < opt.polish) {
+      const double bar = opt.placed_rings > 0 && v.worst < opt.polish ? polish_bar(v) : 0.0;
+      if (bar > 0) {
         const auto t = std::chrono::steady_clock::now();
-        DeformResult d = solve_round(poor_region(v, opt.polish));
+        DeformResult d = solve_round(poor_region(v, bar));
         r.elastic_seconds = since(t);
         if (d.complete && d.worst_ratio > v.worst) {
           r.placed = false;
@@ -122,13 +136,16 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   bool local = false;
   if (!local_region.empty()) {
     r.deform = solve_round(local_region);
-    local = r.deform.complete && r.deform.worst_ratio >= opt.accept_placed;
-    // Kept, but below `polish`: solved again round its elements below that, from it.
-    if (local && r.deform.worst_ratio < opt.polish) {
+    local = r.deform.complete && r.deform.worst_ratio >= opt.accept_local;
+    // Kept at accept_placed or better, but below `polish`: solved again round its elements
+    // below that, from it (a poorer result is left to the optimiser).
+    if (local && r.deform.worst_ratio >= opt.accept_placed && r.deform.worst_ratio < opt.polish) {
       placed = r.deform.mesh;
-      DeformResult d =
-          solve_round(poor_region(mesh_validity(placed, opt.optimiser.bounds), opt.polish));
-      if (d.complete && d.worst_ratio > r.deform.worst_ratio) {
+      const MeshValidity pv = mesh_validity(placed, opt.optimiser.bounds);
+      const double bar = polish_bar(pv);
+      DeformResult d;
+      if (bar > 0) d = solve_round(poor_region(pv, bar));
+      if (bar > 0 && d.complete && d.worst_ratio > r.deform.worst_ratio) {
         d.solved_triangles += r.deform.solved_triangles;
         d.solves += r.deform.solves;
         r.deform = std::move(d);

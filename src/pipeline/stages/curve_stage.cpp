@@ -127,6 +127,10 @@ void run(Context& ctx, const CurveOptions& o) {
   ctx.results["guess_over_solve"] = c.guess_over_solve;
   ctx.results["optimised"] = c.optimised;
   ctx.results["seconds"] = c.seconds;
+  ctx.results["place_seconds"] = c.place_seconds;
+  ctx.results["guess_seconds"] = c.guess_seconds;
+  ctx.results["elastic_seconds"] = c.elastic_seconds;
+  ctx.results["optimise_seconds"] = c.optimise_seconds;
   m = std::move(c.mesh);
   ctx.fields.clear();
 }
@@ -173,7 +177,12 @@ Stage curve_stage() {
         "bulge, fading over this many edge lengths (0: only the wall elements' interiors)");
   t.add("rings", &CurveOptions::placed_rings, integer(0, 1000),
         "p >= 3: if the placed mesh is poor, first solve only on its elements below `placed` "
-        "grown by this many rings, kept if that reaches `placed` (0: never)");
+        "grown by this many rings, kept as `local` says (0: never)");
+  t.add("polish_share", &CurveOptions::polish_share, real(0, 1),
+        "polish only where at most this share of the elements is below `polish`");
+  t.add("local", &CurveOptions::accept_local, real(0),
+        "the local solve's result (`rings`) is kept, then optimised, if valid with its worst "
+        "minJ/maxJ at least this; else the solve within `reach` follows");
   t.add("optimise", &CurveOptions::optimise, boolean(),
         "after the elastic solve, optimise the patches round elements below the threshold");
   t.add(
