@@ -48,8 +48,7 @@ const AllocatorTuning& tune_allocator() {
 #if defined(__GLIBC__)
     t.thresholds = mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1 &&
                    mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1;
-    if (t.thresholds && !(env && std::strcmp(env, "no-huge-pages") == 0))
-      t.huge_pages = advise_heap();
+    if (t.thresholds && env && std::strcmp(env, "huge-pages") == 0) t.huge_pages = advise_heap();
 #endif
     return t;
   }();

@@ -15,21 +15,23 @@
 // in the process for the next solve (the resident size stays near its peak, as
 // with most allocators other than glibc's).
 //
-// Then the first fault of every fresh page: a single curving in a fresh process
-// (a script, the CLI, each run of issue 16's benchmark) touches most of its
-// memory for the first time, and on this project's virtual machines a 4 KiB fault
-// costs about 20 us (a 32 MB matrix copy took 0.18 s). tune_allocator() also grows
-// the heap by 256 MiB at once (M_TOP_PAD; not resident until touched) and advises
-// that range for transparent huge pages (madvise MADV_HUGEPAGE, which Debian's
-// default THP mode "madvise" asks for): 2 MiB per fault. Fresh-process curving
-// (best of 2), without -> with: circles6_bl_1e-3 p = 5 1.20 -> 0.63 s,
-// naca9415_a5_bl_1e-3 p = 5 0.72 -> 0.47 s, plate_holes_layers_1e-3 p = 5 1.18 ->
-// 0.70 s, naca0012_bl_1e-5_fine p = 3 0.77 -> 0.49 s; runs needing more than the
-// range gain less (flap_gap02_bl_1e-4 p = 5, 380 MB: 7.9 -> 6.7 s).
+// HOMESH_MALLOC=huge-pages also grows the heap by 256 MiB at once (M_TOP_PAD; not
+// resident until touched) and advises that range for transparent huge pages (madvise
+// MADV_HUGEPAGE, which Debian's default THP mode "madvise" asks for): 2 MiB per first
+// fault, not 4 KiB. It was the default until 3 Dec 2026, chosen on the best of 2 fresh
+// runs (circles6_bl_1e-3 p = 5 1.20 -> 0.63 s). Six fresh runs each on this project's VMs
+// showed why best-of is the wrong measure here: with huge pages a run is the fastest
+// (0.64 s) or takes 2-3x (2.1-2.6 s, two of six on circles6_bl_1e-3 p = 5; 2.2 s, one of six,
+// on plate_holes_layers_1e-3 p = 5 with local=0.9), 65 % of it in the kernel's
+// clear_page_erms (zeroing fresh 2 MiB pages; most likely pages the host has not backed yet). With
+// the thresholds only: 0.73-0.93 s (mean 0.81 against 1.29) and 0.84-1.08 s (0.92 against 1.08);
+// glibc's own settings 0.81-0.96 and 0.78-1.32. The same on the smaller runs (within the
+// scatter) and on flap_gap02_bl_1e-4 p = 5 (4.5-5.2 s, 4.5-6.5 with huge pages).
 //
 // The CLI and the Python module call it at start; a C++ caller of the library
 // may. HOMESH_MALLOC=default in the environment leaves glibc's settings alone,
-// HOMESH_MALLOC=no-huge-pages sets the thresholds only. A no-op off glibc, and
+// HOMESH_MALLOC=huge-pages adds the huge pages (no-huge-pages, or anything else: the
+// thresholds only). A no-op off glibc, and
 // under a sanitizer's or valgrind's allocator (mallopt refused, or the heap not
 // grown).
 namespace homesh {
