@@ -1,8 +1,6 @@
 #include "curving/curve_mesh.h"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 
 #include "core/raise_order.h"
 #include "curving/interior_blending.h"
