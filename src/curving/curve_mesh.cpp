@@ -140,14 +140,14 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     if (local && r.deform.worst_ratio >= opt.accept_placed && r.deform.worst_ratio < opt.polish) {
       placed = r.deform.mesh;
       const MeshValidity pv = mesh_validity(placed, opt.optimiser.bounds);
-      const double bar = polish_bar(pv);
-      DeformResult d;
-      if (bar > 0) d = solve_round(poor_region(pv, bar));
-      if (bar > 0 && d.complete && d.worst_ratio > r.deform.worst_ratio) {
-        d.solved_triangles += r.deform.solved_triangles;
-        d.solves += r.deform.solves;
-        r.deform = std::move(d);
-        r.polished = true;
+      if (const double bar = polish_bar(pv); bar > 0) {
+        DeformResult d = solve_round(poor_region(pv, bar));
+        if (d.complete && d.worst_ratio > r.deform.worst_ratio) {
+          d.solved_triangles += r.deform.solved_triangles;
+          d.solves += r.deform.solves;
+          r.deform = std::move(d);
+          r.polished = true;
+        }
       }
     }
   }

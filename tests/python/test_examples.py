@@ -55,7 +55,6 @@ def test_naca7526_boundary_layers_curved_to_order_4(tmp_path):
         # The main job's quality (thesis: kept): the solve within reach, 0.9937 measured.
         worst = float(re.search(r"validity: .*worst minJ/maxJ (\d\.\d+)", log).group(1))
         assert worst > 0.99, log
-    if "layers" in [s["name"] for s in homesh.stages()]:
         assert "15 layers on aerofoil (1 loop(s), 121 wall edges, 1 fans)" in log
         # 15 layers of 2 triangles on each of the 121 wall edges and 2 x 15 between each
         # of the fan's 5 normals; 2 triangles fewer for each node removed from the room.
