@@ -4,8 +4,9 @@
 Mesh (geo/naca7526_rotation.geo: NACA-7526 in a 5 x 5 chords square, 0.1 chord along the
 aerofoil): homesh.mesh(), then 2 boundary layers (first 0.02, ratio 1.2) on the aerofoil with
 single normals (cases 1-3) or 5 normals at the trailing edge (cases 4-6, fan_angle 320: the
-trailing edge's domain angle is 326 deg), then homesh.curve(p=2): the quadratic mesh with its
-boundary nodes on the aerofoil, as in Figs 4.18(d) and 4.19(d). The aerofoil then turns
+trailing edge's domain angle is 326 deg), then homesh.curve(p=2, rings=0) (the elastic solve on
+the whole mesh, the thesis' setting): the quadratic mesh with its boundary nodes on the
+aerofoil, as in Figs 4.18(d) and 4.19(d). The aerofoil then turns
 clockwise (step -1 degree, one solve per degree on the current mesh) about its quarter-chord
 point (0.25, 0), the centre of naca.geo's angle of attack, until the first step that would
 leave an element not certified valid; theta_max is the last valid angle. E = 1, nu = 0.25.
@@ -67,7 +68,7 @@ class Rotations:
         gmsh.open(self.geo)
         homesh.mesh()
         homesh.layers(**LAYERS, **(FAN if normals == "multi" else {}))
-        self.triangles[normals] = homesh.curve(p=2)["triangles"]
+        self.triangles[normals] = homesh.curve(p=2, rings=0)["triangles"]
 
     def theta_max(self, normals, formulation, heat):
         self.quadratic_mesh(normals)

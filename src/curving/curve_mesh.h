@@ -86,10 +86,14 @@ struct CurveOptions {
   /// straight interiors; 4.7e-7, 4.09 with 1 ring and blending (p = 2 unchanged, 4.1e-5);
   /// 5.2e-7, 4.04 with the polish too.
   int placed_rings = 1;
-  /// ... from this order on: at p = 2 the usual solve is cheap (0.03 s on
-  /// star4_nolayer_coarse), and the thesis' rotation experiments (tests/app/rotate_cli_test.cpp,
-  /// p = 2) start from its result (theta_max 166 deg, 157 from the local solve's).
-  int placed_rings_from_order = 3;
+  /// ... from this order on. From p = 2 (it was 3): on issue 16's corpus at p = 2 (49
+  /// cases, one fresh process each) the curving took 1.3 s in all against 4.2 s, within
+  /// Gmsh's fastest valid time 24 of 34 runs against 23, within 2x 32 against 27, every
+  /// target still met, the worst run 0.901 both (lshape_r05_bl_1e-3 0.030 -> 0.010 s,
+  /// FastCurving 0.010 s; naca0024_bl_1e-3 0.910 -> 0.943). The thesis' rotation
+  /// experiments start from the solve on the whole mesh (`rings=0`: the hole of
+  /// tests/app/rotate_cli_test.cpp turns 166 deg from it, 157 from the local solve's).
+  int placed_rings_from_order = 2;
   /// The local solve's result (`placed_rings`) is kept if certified valid with its worst
   /// at least this; the optimiser (step 3) then lifts its elements below the threshold.
   /// Below it, the solve within `reach` follows. It was accept_placed (0.9), which sent

@@ -224,7 +224,7 @@ int naca_theta_max(const std::string& fan, const std::string& formulation) {
                             "naca7526_rotation.geo -m mesh -m layers:walls=aerofoil:n=2:"
                             "first=0.02:ratio=1.2" +
                             fan +
-                            " -m curve:p=2 -m rotate:wall=aerofoil:"
+                            " -m curve:p=2:rings=0 -m rotate:wall=aerofoil:"
                             "centre=0.25,0:step=-1:max=90:nu=0.25:" +
                             formulation + " " + dir / "naca_rotation.msh");
   INFO(r.output);

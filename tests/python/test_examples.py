@@ -75,7 +75,7 @@ def test_plate_rotation_matches_the_cli_and_carries_the_thesis_values(tmp_path):
     # Case 1 at nu = 0.4 is the CLI's rotate stage on the same pipeline, to the degree.
     binary = os.path.join(os.path.dirname(homesh.__file__), "..", "homesh")
     cli = subprocess.run([binary, os.path.join(ROOT, "geo", "plate_hole_fig413.geo"), "-m", "mesh",
-                          "-m", "curve:p=2", "-m", "rotate:nu=0.4:formulation=plain"],
+                          "-m", "curve:p=2:rings=0", "-m", "rotate:nu=0.4:formulation=plain"],
                          capture_output=True, text=True, check=True).stdout
     theta = int(re.search(r"rotate: theta_max = (\d+) deg", cli).group(1))
     assert int(rows[("plain", 0.4)]["theta_max"]) == theta == 91
