@@ -59,7 +59,7 @@ MetricField make_metric(const std::string& metric, const Mesh& reference, double
                            16, kCoarseMax);
   const CartesianGrid coarse = CartesianGrid::covering(lo, hi, n, 1);
   if (view) return gmsh_adapter::metric_from_view(gmsh_adapter::metric_view_tag(metric), coarse);
-  const MetricField iso = iso_metric_from_sizes(coarse, reference.x, h, tri);
+  MetricField iso = iso_metric_from_sizes(coarse, reference.x, h, tri);
   if (metric == "iso") return iso;
   std::vector<Eigen::Matrix2Xd> polylines;
   for (const int c : walls) polylines.push_back(walls_from->curve_samples.at(c));

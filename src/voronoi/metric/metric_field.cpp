@@ -34,7 +34,7 @@ double metric_min_speed(const Eigen::Matrix2d& M) { return 1.0 / std::sqrt(eigen
 bool MetricField::operator==(const MetricField& o) const {
   const CartesianGrid &a = coarse_, &b = o.coarse_;
   return a.origin == b.origin && a.dx == b.dx && a.dy == b.dy && a.nx == b.nx && a.ny == b.ny &&
-         M_ == o.M_ && layer_ == o.layer_;
+         (tensors_ == o.tensors_ || tensors_->M == o.tensors_->M) && layer_ == o.layer_;
 }
 
 MetricField MetricField::with_layer(std::shared_ptr<const WallLayer> layer) const {
@@ -47,15 +47,16 @@ MetricField MetricField::with_layer(std::shared_ptr<const WallLayer> layer) cons
 }
 
 MetricField::MetricField(const CartesianGrid& coarse, std::vector<Eigen::Matrix2d> M)
-    : coarse_(coarse), M_(std::move(M)) {
-  if (static_cast<int>(M_.size()) != coarse_.node_count())
-    throw Error("MetricField: " + std::to_string(M_.size()) + " metrics for " +
+    : coarse_(coarse) {
+  if (static_cast<int>(M.size()) != coarse_.node_count())
+    throw Error("MetricField: " + std::to_string(M.size()) + " metrics for " +
                 std::to_string(coarse_.node_count()) + " coarse nodes");
   max_speed_ = 0.0;
   min_speed_ = std::numeric_limits<double>::infinity();
-  Minv_.reserve(M_.size());
-  for (std::size_t k = 0; k < M_.size(); ++k) {
-    const Eigen::Matrix2d& m = M_[k];
+  auto t = std::make_shared<Tensors>();
+  t->M = std::move(M);
+  for (std::size_t k = 0; k < t->M.size(); ++k) {
+    const Eigen::Matrix2d& m = t->M[k];
     // An isotropic tensor (the iso metric's at every node) has its diagonal
     // as eigenvalues: Eigen's solver gives exactly that, at some 100 ns a node.
     const bool isotropic = m(0, 1) == 0.0 && m(1, 0) == 0.0 && m(0, 0) == m(1, 1);
@@ -63,12 +64,22 @@ MetricField::MetricField(const CartesianGrid& coarse, std::vector<Eigen::Matrix2
     if (std::abs(m(0, 1) - m(1, 0)) > 1e-12 * m.norm() || !(lambda(0) > 0.0))
       throw Error("MetricField: metric at coarse node " + std::to_string(k) +
                   " is not symmetric positive definite");
-    Minv_.push_back(m.inverse());
     max_speed_ = std::max(max_speed_, 1.0 / std::sqrt(lambda(0)));
     min_speed_ = std::min(min_speed_, 1.0 / std::sqrt(lambda(1)));
     anisotropy_ = std::max(anisotropy_, std::sqrt(lambda(1) / lambda(0)));
-    uniform_ = uniform_ && m == M_[0];
+    uniform_ = uniform_ && m == t->M[0];
   }
+  M_ = t->M.data();
+  tensors_ = std::move(t);
+}
+
+const std::vector<Eigen::Matrix2d>& MetricField::inverses() const {
+  const Tensors& t = *tensors_;
+  std::call_once(t.inverted, [&t] {
+    t.Minv.reserve(t.M.size());
+    for (const Eigen::Matrix2d& m : t.M) t.Minv.push_back(m.inverse());
+  });
+  return t.Minv;
 }
 
 MetricField MetricField::constant(const Eigen::Matrix2d& M) {
@@ -101,9 +112,10 @@ ShepardStencil MetricField::stencil(const Eigen::Vector2d& p) const {
 }
 
 double MetricField::stencil_speed(const ShepardStencil& s, const Eigen::Vector2d& N) const {
+  const std::vector<Eigen::Matrix2d>& Minv = inverses();
   double F = 0.0;
   for (int k = 0; k < 4; ++k)
-    if (s.w[k] != 0.0) F += s.w[k] * metric_speed(Minv_[s.node[k]], N);
+    if (s.w[k] != 0.0) F += s.w[k] * metric_speed(Minv[s.node[k]], N);
   return F;
 }
 

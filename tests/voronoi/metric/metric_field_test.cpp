@@ -87,3 +87,25 @@ TEST_CASE("MetricField: Shepard weights of the 4 corners and the speed average",
   bad << 1, 0, 0, -1;
   CHECK_THROWS_AS(MetricField::constant(bad), Error);
 }
+
+TEST_CASE(
+    "MetricField: copies share the nodes' tensors; the inverses, made on first use, are "
+    "theirs",
+    "[voronoi][metric]") {
+  const CartesianGrid coarse = CartesianGrid::spanning({0, 0}, {2, 1}, 3, 2);
+  std::vector<Eigen::Matrix2d> M;
+  for (int k = 0; k < coarse.node_count(); ++k)
+    M.push_back(metric_from_axes(0.4 * k, 2.0 + k, 0.25));
+  const MetricField field(coarse, M);
+  const MetricField copy = field;  // NOLINT(performance-unnecessary-copy-initialization)
+  CHECK(&copy.metric(3) == &field.metric(3));
+  CHECK(copy == field);
+  for (int k = 0; k < coarse.node_count(); ++k) {
+    CHECK(field.metric(k) == M[k]);
+    CHECK(copy.inverse(k) == M[k].inverse());
+  }
+  CHECK(&copy.inverse(2) == &field.inverse(2));
+  // A field with other tensors is another field, though its grid is the same.
+  M[4] *= 2.0;
+  CHECK_FALSE(MetricField(coarse, M) == field);
+}
