@@ -31,10 +31,19 @@ Eigen::Matrix2d metric_from_axes(double theta, double h1, double h2) {
 double metric_max_speed(const Eigen::Matrix2d& M) { return 1.0 / std::sqrt(eigenvalues(M)(0)); }
 double metric_min_speed(const Eigen::Matrix2d& M) { return 1.0 / std::sqrt(eigenvalues(M)(1)); }
 
+bool MetricField::same_tensors(const MetricField& o) const {
+  if (tensors_ == o.tensors_) return true;
+  if (a_ && o.a_) return tensors_->a == o.tensors_->a;
+  if (!a_ && !o.a_) return tensors_->M == o.tensors_->M;
+  for (int k = 0; k < coarse_.node_count(); ++k)
+    if (metric(k) != o.metric(k)) return false;
+  return true;
+}
+
 bool MetricField::operator==(const MetricField& o) const {
   const CartesianGrid &a = coarse_, &b = o.coarse_;
   return a.origin == b.origin && a.dx == b.dx && a.dy == b.dy && a.nx == b.nx && a.ny == b.ny &&
-         (tensors_ == o.tensors_ || tensors_->M == o.tensors_->M) && layer_ == o.layer_;
+         same_tensors(o) && layer_ == o.layer_;
 }
 
 MetricField MetricField::with_layer(std::shared_ptr<const WallLayer> layer) const {
@@ -47,15 +56,42 @@ MetricField MetricField::with_layer(std::shared_ptr<const WallLayer> layer) cons
 }
 
 MetricField::MetricField(const CartesianGrid& coarse, std::vector<Eigen::Matrix2d> M)
+    : MetricField(coarse, [&M] {
+        auto t = std::make_shared<Tensors>();
+        t->M = std::move(M);
+        return t;
+      }()) {}
+
+MetricField MetricField::isotropic(const CartesianGrid& coarse, std::vector<double> a) {
+  auto t = std::make_shared<Tensors>();
+  t->a = std::move(a);
+  return MetricField(coarse, std::move(t));
+}
+
+MetricField::MetricField(const CartesianGrid& coarse, std::shared_ptr<Tensors> t)
     : coarse_(coarse) {
-  if (static_cast<int>(M.size()) != coarse_.node_count())
-    throw Error("MetricField: " + std::to_string(M.size()) + " metrics for " +
+  const bool iso = t->M.empty();
+  const std::size_t count = iso ? t->a.size() : t->M.size();
+  if (static_cast<int>(count) != coarse_.node_count())
+    throw Error("MetricField: " + std::to_string(count) + " metrics for " +
                 std::to_string(coarse_.node_count()) + " coarse nodes");
   max_speed_ = 0.0;
   min_speed_ = std::numeric_limits<double>::infinity();
-  auto t = std::make_shared<Tensors>();
-  t->M = std::move(M);
-  for (std::size_t k = 0; k < t->M.size(); ++k) {
+  if (iso) {
+    for (std::size_t k = 0; k < count; ++k) {
+      const double a = t->a[k];
+      if (!(a > 0.0))
+        throw Error("MetricField: metric at coarse node " + std::to_string(k) +
+                    " is not symmetric positive definite");
+      max_speed_ = std::max(max_speed_, 1.0 / std::sqrt(a));
+      min_speed_ = std::min(min_speed_, 1.0 / std::sqrt(a));
+      uniform_ = uniform_ && a == t->a[0];
+    }
+    a_ = t->a.data();
+    tensors_ = std::move(t);
+    return;
+  }
+  for (std::size_t k = 0; k < count; ++k) {
     const Eigen::Matrix2d& m = t->M[k];
     // An isotropic tensor (the iso metric's at every node) has its diagonal
     // as eigenvalues: Eigen's solver gives exactly that, at some 100 ns a node.
@@ -75,9 +111,10 @@ MetricField::MetricField(const CartesianGrid& coarse, std::vector<Eigen::Matrix2
 
 const std::vector<Eigen::Matrix2d>& MetricField::inverses() const {
   const Tensors& t = *tensors_;
-  std::call_once(t.inverted, [&t] {
-    t.Minv.reserve(t.M.size());
-    for (const Eigen::Matrix2d& m : t.M) t.Minv.push_back(m.inverse());
+  std::call_once(t.inverted, [this, &t] {
+    const int n = coarse_.node_count();
+    t.Minv.reserve(n);
+    for (int k = 0; k < n; ++k) t.Minv.push_back(metric(k).inverse());
   });
   return t.Minv;
 }
@@ -136,10 +173,15 @@ Eigen::Matrix2d MetricField::metric_at(const Eigen::Vector2d& p) const {
   const double d[4] = {x0 * x0 + y0 * y0, x1 * x1 + y0 * y0, x1 * x1 + y1 * y1, x0 * x0 + y1 * y1};
   const int node[4] = {g.index(i, j), g.index(i + 1, j), g.index(i + 1, j + 1), g.index(i, j + 1)};
   for (int k = 0; k < 4; ++k)
-    if (d[k] == 0.0) return M_[node[k]];
+    if (d[k] == 0.0) return metric(node[k]);
   const double d01 = d[0] * d[1], d23 = d[2] * d[3];
   const double w[4] = {d[1] * d23, d[0] * d23, d01 * d[3], d01 * d[2]};
   const double scale = 1.0 / (w[0] + w[1] + w[2] + w[3]);
+  if (a_) {  // the diagonal entry of the tensors' sum below, in the same order
+    double a = w[0] * a_[node[0]];
+    for (int k = 1; k < 4; ++k) a += w[k] * a_[node[k]];
+    return Eigen::Matrix2d::Identity() * (a * scale);
+  }
   Eigen::Matrix2d M = w[0] * M_[node[0]];
   for (int k = 1; k < 4; ++k) M += w[k] * M_[node[k]];
   return M * scale;

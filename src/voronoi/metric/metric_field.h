@@ -58,11 +58,17 @@ class MetricField {
   /// coarse.index(i, j)). Throws homesh::Error if the count is wrong or a
   /// matrix is not SPD.
   MetricField(const CartesianGrid& coarse, std::vector<Eigen::Matrix2d> M);
+  /// The isotropic field a_k I at coarse node k, kept as the numbers a_k (a
+  /// quarter of the tensors' memory; every value the same, to the bit, as the
+  /// field of the tensors a_k I). Throws homesh::Error as above, for a_k not > 0.
+  static MetricField isotropic(const CartesianGrid& coarse, std::vector<double> a);
   /// The same metric everywhere.
   static MetricField constant(const Eigen::Matrix2d& M);
 
   const CartesianGrid& coarse() const { return coarse_; }
-  const Eigen::Matrix2d& metric(int coarse_node) const { return M_[coarse_node]; }
+  Eigen::Matrix2d metric(int coarse_node) const {
+    return a_ ? Eigen::Matrix2d(Eigen::Matrix2d::Identity() * a_[coarse_node]) : M_[coarse_node];
+  }
   const Eigen::Matrix2d& inverse(int coarse_node) const { return inverses()[coarse_node]; }
 
   ShepardStencil stencil(const Eigen::Vector2d& p) const;
@@ -108,13 +114,17 @@ class MetricField {
   // (best of 3 fresh processes, alternating with the build before): 0.78-1.00
   // of the time, 0.96 -> 0.81 s in all, the same meshes.
   struct Tensors {
-    std::vector<Eigen::Matrix2d> M;
+    std::vector<Eigen::Matrix2d> M;  // or, for an isotropic field,
+    std::vector<double> a;           // the numbers a_k of a_k I
     mutable std::vector<Eigen::Matrix2d> Minv;
     mutable std::once_flag inverted;
   };
+  MetricField(const CartesianGrid& coarse, std::shared_ptr<Tensors> t);
+  bool same_tensors(const MetricField& o) const;
   const std::vector<Eigen::Matrix2d>& inverses() const;
   std::shared_ptr<const Tensors> tensors_;
-  const Eigen::Matrix2d* M_ = nullptr;  // tensors_->M.data()
+  const Eigen::Matrix2d* M_ = nullptr;  // tensors_->M.data(), or
+  const double* a_ = nullptr;           // tensors_->a.data()
   double max_speed_ = 0.0;
   double min_speed_ = 0.0;
   double anisotropy_ = 1.0;

@@ -68,9 +68,10 @@ MetricField iso_metric_from_sizes(const CartesianGrid& g, const Eigen::Matrix2Xd
       queue.push_back(g.index(a, b));
     }
   }
-  std::vector<Eigen::Matrix2d> M(g.node_count());
-  for (int n = 0; n < g.node_count(); ++n) M[n] = Eigen::Matrix2d::Identity() / (size[n] * size[n]);
-  return MetricField(g, std::move(M));
+  // 1 / h^2 in place: the field a_k I, every value the same, to the bit, as
+  // that of the tensors I / h^2 (the entries 1 / h^2 and 0).
+  for (double& h : size) h = 1.0 / (h * h);
+  return MetricField::isotropic(g, std::move(size));
 }
 
 MetricField boundary_layer_metric(const MetricField& iso,
