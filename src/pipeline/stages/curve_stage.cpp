@@ -176,9 +176,8 @@ Stage curve_stage() {
         "> 0: the first guess moves the nodes near the wall with the nearest wall edge's "
         "bulge, fading over this many edge lengths (0: only the wall elements' interiors)");
   t.add("rings", &CurveOptions::placed_rings, integer(0, 1000),
-        "p >= `rings_from`: if the placed mesh is poor, first solve only on its elements below "
-        "`placed` "
-        "grown by this many rings, kept as `local` says (0: never)");
+        "p >= `rings_from`: if the placed mesh is poor, first solve only on its elements "
+        "below `placed` grown by this many rings, kept as `local` says (0: never)");
   t.add("rings_from", &CurveOptions::placed_rings_from_order, integer(2, kMaxOrder),
         "the local solve (`rings`) from this order on");
   t.add("polish_share", &CurveOptions::polish_share, real(0, 1),

@@ -109,10 +109,11 @@ class MetricField {
   // read them, not the exact dual's mesher). On star5_voronoi of the curving
   // corpus (a 352 x 352 grid, 1967 triangles) the stage took 139 ms, 28 of
   // them for the iso field, mostly page faults of fresh memory, and the copies
-  // and inverses of its 4 MB of tensors some 20 more. With them shared and the
-  // inverses deferred, the 8 corpus models then over 3x Gmsh frontal's time
-  // (best of 3 fresh processes, alternating with the build before): 0.78-1.00
-  // of the time, 0.96 -> 0.81 s in all, the same meshes.
+  // and inverses of its 4 MB of tensors some 20 more. With them shared, the
+  // inverses deferred and an isotropic field kept as numbers, the 8 corpus
+  // models then over 3x Gmsh frontal's time (best of 3 fresh processes,
+  // alternating with the build before): 0.68-0.98 of the time, 1.16 -> 0.89 s
+  // in all, the same meshes (scripts/bench/README.md, voronoi_corpus.py).
   struct Tensors {
     std::vector<Eigen::Matrix2d> M;  // or, for an isotropic field,
     std::vector<double> a;           // the numbers a_k of a_k I
