@@ -75,38 +75,27 @@ MetricField::MetricField(const CartesianGrid& coarse, std::shared_ptr<Tensors> t
   if (static_cast<int>(count) != coarse_.node_count())
     throw Error("MetricField: " + std::to_string(count) + " metrics for " +
                 std::to_string(coarse_.node_count()) + " coarse nodes");
+  M_ = iso ? nullptr : t->M.data();
+  a_ = iso ? t->a.data() : nullptr;
+  tensors_ = std::move(t);
   max_speed_ = 0.0;
   min_speed_ = std::numeric_limits<double>::infinity();
-  if (iso) {
-    for (std::size_t k = 0; k < count; ++k) {
-      const double a = t->a[k];
-      if (!(a > 0.0))
-        throw Error("MetricField: metric at coarse node " + std::to_string(k) +
-                    " is not symmetric positive definite");
-      max_speed_ = std::max(max_speed_, 1.0 / std::sqrt(a));
-      min_speed_ = std::min(min_speed_, 1.0 / std::sqrt(a));
-      uniform_ = uniform_ && a == t->a[0];
-    }
-    a_ = t->a.data();
-    tensors_ = std::move(t);
-    return;
-  }
-  for (std::size_t k = 0; k < count; ++k) {
-    const Eigen::Matrix2d& m = t->M[k];
+  for (int k = 0; k < static_cast<int>(count); ++k) {
+    const Eigen::Matrix2d m = metric(k);
     // An isotropic tensor (the iso metric's at every node) has its diagonal
     // as eigenvalues: Eigen's solver gives exactly that, at some 100 ns a node.
     const bool isotropic = m(0, 1) == 0.0 && m(1, 0) == 0.0 && m(0, 0) == m(1, 1);
-    const Eigen::Vector2d lambda = isotropic ? Eigen::Vector2d(m(0, 0), m(0, 0)) : eigenvalues(m);
+    const Eigen::Vector2d lambda = a_          ? Eigen::Vector2d(a_[k], a_[k])
+                                   : isotropic ? Eigen::Vector2d(m(0, 0), m(0, 0))
+                                               : eigenvalues(m);
     if (std::abs(m(0, 1) - m(1, 0)) > 1e-12 * m.norm() || !(lambda(0) > 0.0))
       throw Error("MetricField: metric at coarse node " + std::to_string(k) +
                   " is not symmetric positive definite");
     max_speed_ = std::max(max_speed_, 1.0 / std::sqrt(lambda(0)));
     min_speed_ = std::min(min_speed_, 1.0 / std::sqrt(lambda(1)));
     anisotropy_ = std::max(anisotropy_, std::sqrt(lambda(1) / lambda(0)));
-    uniform_ = uniform_ && m == t->M[0];
+    uniform_ = uniform_ && m == metric(0);
   }
-  M_ = t->M.data();
-  tensors_ = std::move(t);
 }
 
 const std::vector<Eigen::Matrix2d>& MetricField::inverses() const {
