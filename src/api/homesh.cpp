@@ -110,7 +110,7 @@ Result run(const std::string& name, const StageOptions& options) {
     r.nodes = ctx.mesh->num_nodes();
     r.triangles = ctx.mesh->num_triangles();
     r.quadrilaterals = ctx.mesh->num_quads();
-    r.validity = summary(*ctx.mesh);
+    r.validity = summary(*ctx.mesh, ctx.mesh_validity());
     return r;
   });
 }

@@ -28,6 +28,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   r.place_seconds = since(start);
   std::vector<int> local_region;  // step 1's poor elements and their rings
   Mesh placed;                    // step 1's best guess, if step 1 ran
+  MeshValidity placed_validity;   // its certified validity (by opt.optimiser.bounds)
   const std::vector<bool> vertex = vertex_nodes(raised);
   std::vector<bool> held = boundary;
   if (opt.fixed_vertices) {
@@ -51,7 +52,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     for (int i = 0; i < raised.num_nodes(); ++i) prescribed[i] = prescribed[i] || outside[i];
     DeformOptions around = opt.deform;
     around.region = region;
-    return deform_mesh(raised, placed.x, prescribed, around);
+    return deform_mesh(raised, placed.x, prescribed, around, {&placed, &placed_validity});
   };
   const bool rings = opt.placed_rings > 0 && opt.order >= opt.placed_rings_from_order;
   auto poor_region = [&](const MeshValidity& v, double bar) {
@@ -96,6 +97,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
       if (g == 0 || w.invalid < v.invalid || (w.invalid == v.invalid && w.worst > v.worst)) {
         v = std::move(w);
         placed = std::move(guesses[g]);
+        placed_validity = v;
         r.guess = g == 1 ? "propagated" : opt.blend ? "blended" : "straight";
       }
       if (v.invalid == 0 && v.worst >= opt.accept_placed) break;
@@ -117,11 +119,13 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
           r.worst_ratio = d.worst_ratio;
           r.deform = std::move(d);
           r.mesh = r.deform.mesh;
+          r.validity = r.deform.validity;
           r.seconds = since(start);
           return r;
         }
       }
       r.mesh = std::move(placed);
+      r.validity = std::move(placed_validity);
       r.seconds = since(start);
       return r;
     }
@@ -138,10 +142,11 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     // Kept at accept_placed or better, but below `polish`: solved again round its elements
     // below that, from it (a poorer result is left to the optimiser).
     if (local && r.deform.worst_ratio >= opt.accept_placed && r.deform.worst_ratio < opt.polish) {
+      placed_validity =
+          mesh_validity(r.deform.mesh, {&r.deform.mesh, &r.deform.validity}, opt.optimiser.bounds);
       placed = r.deform.mesh;
-      const MeshValidity pv = mesh_validity(placed, opt.optimiser.bounds);
-      if (const double bar = polish_bar(pv); bar > 0) {
-        DeformResult d = solve_round(poor_region(pv, bar));
+      if (const double bar = polish_bar(placed_validity); bar > 0) {
+        DeformResult d = solve_round(poor_region(placed_validity, bar));
         if (d.complete && d.worst_ratio > r.deform.worst_ratio) {
           d.solved_triangles += r.deform.solved_triangles;
           d.solves += r.deform.solves;
@@ -192,6 +197,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     guess_start.complete = true;
     guess_start.reached = 1;
     guess_start.worst_ratio = r.placed_worst;
+    guess_start.validity = placed_validity;
   }
   if (!r.deform.complete && guess_start.complete) {
     r.deform = std::move(guess_start);
@@ -206,6 +212,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
       r.guess_over_solve = true;
     }
     r.mesh = std::move(r.deform.mesh);
+    r.validity = std::move(r.deform.validity);
     r.seconds = since(start);
     return r;
   }
@@ -217,10 +224,12 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   // elements stay below the threshold and a pass still lifts the worst by kPassGain.
   auto optimise = [&] {
     const auto t = std::chrono::steady_clock::now();
-    OptimiseResult o = optimise_mesh(r.deform.mesh, none, opt.optimiser, curves);
+    OptimiseResult o =
+        optimise_mesh(r.deform.mesh, none, opt.optimiser, curves,
+                      r.deform.validity.ratio.size() > 0 ? &r.deform.validity : nullptr);
     for (int pass = 1; pass < opt.optimise_passes && o.worst_after < opt.optimiser.threshold;
          ++pass) {
-      OptimiseResult next = optimise_mesh(o.mesh, none, opt.optimiser, curves);
+      OptimiseResult next = optimise_mesh(o.mesh, none, opt.optimiser, curves, &o.validity);
       const bool gained = next.worst_after > o.worst_after + kPassGain;
       next.worst_before = o.worst_before;
       next.poor_before = o.poor_before;
@@ -270,6 +279,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     }
   }
   r.mesh = std::move(r.optimisation.mesh);
+  r.validity = r.optimisation.validity;
   r.worst_ratio = r.optimisation.worst_after;
   r.seconds = since(start);
   return r;

@@ -140,8 +140,11 @@ struct CurveOptions {
 };
 
 struct CurveResult {
-  Mesh mesh;                       ///< the curved mesh (valid if deform.complete or placed)
-  double worst_ratio = 1;          ///< its worst certified minJ/maxJ
+  Mesh mesh;               ///< the curved mesh (valid if deform.complete or placed)
+  double worst_ratio = 1;  ///< its worst certified minJ/maxJ
+  /// Its certified validity where curving had it at hand (by opt.optimiser.bounds, or the
+  /// default bounds), else empty.
+  MeshValidity validity;
   bool placed = false;             ///< step 1 sufficed: no solve, no optimisation
   bool polished = false;           ///< step 1's guess sufficed, then solved round its poorest
   std::string guess = "straight";  ///< step 1's guess kept: straight, blended or propagated

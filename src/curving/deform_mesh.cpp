@@ -113,13 +113,18 @@ namespace {
 // deform_mesh on the submesh of moving_region or reach_region: its nodes
 // shared with the rest of the mesh are held where they are.
 DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
-                           const std::vector<bool>& prescribed, const DeformOptions& opt) {
+                           const std::vector<bool>& prescribed, const DeformOptions& opt,
+                           const KnownValidity& known) {
   std::vector<bool> moving(m.num_nodes());
   for (int i = 0; i < m.num_nodes(); ++i) moving[i] = prescribed[i] && target.col(i) != m.x.col(i);
   const std::vector<int> region = !opt.region.empty() ? opt.region
                                   : opt.layers > 0    ? moving_region(m, moving, opt.layers)
                                                       : reach_region(m, moving, opt.reach);
-  if (region.empty()) return {m, 1.0, true, 0, 0, mesh_validity(m).worst, 0, 0};
+  if (region.empty()) {
+    DeformResult r{m, 1.0, true, 0, 0, 1.0, 0, 0, mesh_validity(m, known)};
+    r.worst_ratio = r.validity.worst;
+    return r;
+  }
   const int num_2d = m.num_elements_2d(), num_tri = m.num_triangles();
   std::vector<bool> inside(num_2d, false), outside_node(m.num_nodes(), false);
   for (int e : region) {
@@ -186,7 +191,8 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
   // convergence study at p = 3 lost its rate).
   for (int i = 0; i < m.num_nodes(); ++i)
     if (prescribed[i] && local[i] < 0) r.mesh.x.col(i) = target.col(i);
-  r.worst_ratio = mesh_validity(r.mesh).worst;
+  r.validity = mesh_validity(r.mesh, known);
+  r.worst_ratio = r.validity.worst;
   r.solved_triangles = int(region.size());
   return r;
 }
@@ -195,6 +201,12 @@ DeformResult deform_region(const Mesh& m, const Eigen::Matrix2Xd& target,
 
 DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
                          const std::vector<bool>& prescribed, const DeformOptions& opt) {
+  return deform_mesh(m, target, prescribed, opt, KnownValidity{});
+}
+
+DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
+                         const std::vector<bool>& prescribed, const DeformOptions& opt,
+                         const KnownValidity& known) {
   if (target.cols() != m.num_nodes() ||
       prescribed.size() != static_cast<std::size_t>(m.num_nodes()))
     throw Error("deform_mesh: target and prescribed must have one entry per node");
@@ -202,11 +214,11 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
   if (opt.layers < 0) throw Error("deform_mesh: layers must be >= 0");
   if (!(opt.reach >= 0)) throw Error("deform_mesh: reach must be >= 0");
   if (!opt.region.empty() || opt.layers > 0 || opt.reach > 0)
-    return deform_region(m, target, prescribed, opt);
+    return deform_region(m, target, prescribed, opt, known);
   const AnalogyFormulation& formulation = analogy_formulation(opt.formulation);
   const Eigen::Matrix2Xd start = m.x;
 
-  DeformResult r{m, 0.0, false, 0, 0, 1.0, 0, m.num_elements_2d()};
+  DeformResult r{m, 0.0, false, 0, 0, 1.0, 0, m.num_elements_2d(), {}};
   // The prescribed dofs are the same at every increment: one pattern, one
   // symbolic analysis. A halved increment keeps the mesh, hence the stiffness
   // and loads: it only needs new prescribed values (resolve).
@@ -236,11 +248,12 @@ DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
 
     Mesh trial = r.mesh;
     trial.x += s.u;
-    const MeshValidity v = mesh_validity(trial);
+    MeshValidity v = mesh_validity(trial);
     if (v.invalid == 0) {
       r.mesh = std::move(trial);
       r.reached = next;
       r.worst_ratio = v.worst;
+      r.validity = std::move(v);
       retrying = false;
       step = std::min(2 * step, full_step);
       continue;

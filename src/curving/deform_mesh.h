@@ -23,6 +23,7 @@
 #include "core/mesh.h"
 #include "curving/analogy_formulation.h"
 #include "fem/linear_solver.h"
+#include "quality/mesh_validity.h"
 
 namespace homesh {
 
@@ -75,6 +76,9 @@ struct DeformResult {
   /// 2D elements (triangles and quadrilaterals) the elasticity was posed on
   /// (layers, reach, region); the name predates quadrilaterals.
   int solved_triangles = 0;
+  /// The certified validity of `mesh` (default bounds); empty (no ratios) if no
+  /// increment was accepted.
+  MeshValidity validity;
 };
 
 /// Deforms m so that each node i with prescribed[i] moves from m.x.col(i) to
@@ -84,6 +88,13 @@ struct DeformResult {
 /// formulation) or a failed solve.
 DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
                          const std::vector<bool>& prescribed, const DeformOptions& opt = {});
+
+/// As above, given `known`: a mesh with m's elements and its validity by the
+/// default bounds, from which a solve on a region reuses the bounds of the
+/// elements it leaves where they are in it (a speed-up only: the same result).
+DeformResult deform_mesh(const Mesh& m, const Eigen::Matrix2Xd& target,
+                         const std::vector<bool>& prescribed, const DeformOptions& opt,
+                         const KnownValidity& known);
 
 /// The 2D elements within `layers` >= 1 element layers of the nodes with
 /// moving[i]: layer 1 holds every element with a moving node, layer k + 1

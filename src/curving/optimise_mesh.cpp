@@ -314,7 +314,8 @@ struct PatchOutcome {
 
 // One pass: patches of opt.layers rings round the poor elements (first_layers ignored).
 OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
-                             const OptimiseOptions& opt, const CurveEvaluator* curves) {
+                             const OptimiseOptions& opt, const CurveEvaluator* curves,
+                             const MeshValidity* known) {
   if (static_cast<int>(fixed.size()) != m.num_nodes())
     throw Error("optimise_mesh: fixed has " + std::to_string(fixed.size()) + " entries for " +
                 std::to_string(m.num_nodes()) + " nodes");
@@ -327,7 +328,7 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
 
   OptimiseResult res;
   res.mesh = m;
-  const MeshValidity before = mesh_validity(m, opt.bounds);
+  const MeshValidity before = mesh_validity(m, {&m, known}, opt.bounds);
   Eigen::VectorXd ratio = before.ratio;
   std::vector<bool> valid(m.num_elements_2d()), poor(m.num_elements_2d());
   for (int e = 0; e < m.num_elements_2d(); ++e) {
@@ -459,21 +460,24 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
   res.worst_after = m.num_elements_2d() > 0 ? ratio.minCoeff() : 1.0;
   for (int e = 0; e < m.num_elements_2d(); ++e)
     res.poor_after += before.min_det(e) > 0 && ratio(e) < opt.threshold;
+  // The kept patches' elements bounded again, the others as they were.
+  res.validity = mesh_validity(res.mesh, m, before, opt.bounds);
   return res;
 }
 
 }  // namespace
 
 OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
-                             const OptimiseOptions& opt, const CurveEvaluator* curves) {
+                             const OptimiseOptions& opt, const CurveEvaluator* curves,
+                             const MeshValidity* known) {
   if (opt.first_layers < 0) throw Error("optimise_mesh: bad options (first_layers >= 0)");
   if (opt.first_layers == 0 || opt.first_layers >= opt.layers)
-    return optimise_pass(m, fixed, opt, curves);
+    return optimise_pass(m, fixed, opt, curves, known);
   OptimiseOptions small = opt;
   small.layers = opt.first_layers;
-  OptimiseResult first = optimise_pass(m, fixed, small, curves);
+  OptimiseResult first = optimise_pass(m, fixed, small, curves, known);
   if (first.poor_after == 0) return first;
-  OptimiseResult r = optimise_pass(first.mesh, fixed, opt, curves);
+  OptimiseResult r = optimise_pass(first.mesh, fixed, opt, curves, &first.validity);
   r.worst_before = first.worst_before;
   r.poor_before = first.poor_before;
   r.invalid = first.invalid;

@@ -51,6 +51,7 @@
 #include "curving/curve_evaluator.h"
 #include "curving/distortion_energy.h"
 #include "quality/jacobian_bounds.h"
+#include "quality/mesh_validity.h"
 
 namespace homesh {
 
@@ -128,15 +129,18 @@ struct OptimiseResult {
   int sliding_nodes = 0;     ///< of which on a curve, sliding along it
   double energy_before = 0;  ///< summed energy of the kept patches, before and after
   double energy_after = 0;
+  MeshValidity validity;  ///< the certified validity of `mesh` (by opt.bounds)
 };
 
 /// Optimises m (triangles and quadrilaterals of any order p >= 1, counter-clockwise
 /// elements; at p = 1 only with free_vertices does a node move) with the nodes
 /// where fixed[i] (#nodes) held, and the boundary nodes on curves that
 /// `curves` slides (none if null) sliding as opt.slide says. Throws
-/// homesh::Error on a wrong `fixed` size or bad options.
+/// homesh::Error on a wrong `fixed` size or bad options. `known`, if given, is
+/// m's validity (reused where its bounds are opt.bounds: a speed-up only).
 OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
                              const OptimiseOptions& opt = {},
-                             const CurveEvaluator* curves = nullptr);
+                             const CurveEvaluator* curves = nullptr,
+                             const MeshValidity* known = nullptr);
 
 }  // namespace homesh

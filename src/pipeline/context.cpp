@@ -16,6 +16,12 @@ void Context::require_cad(const std::string& stage) const {
                 " has no CAD geometry to mesh (give a .geo, .step or .brep)");
 }
 
+MeshValidity Context::mesh_validity() const {
+  if (!mesh) throw Error("the certified validity of " + input + ": no mesh");
+  if (!certified) return homesh::mesh_validity(*mesh);
+  return homesh::mesh_validity(*mesh, certified->mesh, certified->validity);
+}
+
 void Context::set_field(Field f) {
   for (Field& g : fields)
     if (g.name == f.name) {

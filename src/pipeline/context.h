@@ -12,6 +12,7 @@
 #include "core/field.h"
 #include "core/mesh.h"
 #include "pipeline/log.h"
+#include "quality/mesh_validity.h"
 
 namespace homesh {
 
@@ -35,6 +36,17 @@ struct Context {
   /// Let a `.geo` input run commands that reach outside the model (System,
   /// Save, ...: gmsh/geo_commands.h); refused otherwise.
   bool trust_geo = false;
+
+  /// A state of `mesh` and its certified validity, where a stage had them at
+  /// hand: mesh_validity() reuses its bounds for the elements still as they were.
+  struct Certified {
+    Mesh mesh;
+    MeshValidity validity;
+  };
+  std::optional<Certified> certified;
+
+  /// The certified validity of the mesh (default bounds), reusing `certified`.
+  MeshValidity mesh_validity() const;
 
   /// Adds `f`, replacing a field of the same name.
   void set_field(Field f);

@@ -160,7 +160,7 @@ void write_output(const std::string& path, const std::string& provenance, Contex
   const Mesh& m = ctx.require_mesh("output");
   const OutputFormat format = check_output_path(path);
   // Every output carries its certified validity; an invalid mesh is never written silently.
-  const MeshValidity v = mesh_validity(m);
+  const MeshValidity v = ctx.mesh_validity();
   if (std::none_of(ctx.fields.begin(), ctx.fields.end(),
                    [](const Field& f) { return f.name == kValidityFieldName; })) {
     ctx.log.info("{}", validity_line(m, v));

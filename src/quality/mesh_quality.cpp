@@ -132,9 +132,11 @@ class LatticeSampling {
 constexpr int kPrefetchAhead = 4;
 
 // The one loop over the triangles and quadrilaterals: bounds if `bounds`,
-// measures if qs is not empty.
+// measures if qs is not empty. With `known` (bounds only), the elements none of
+// whose nodes moved (moved[i] false) take their bounds from it.
 MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int lattice, Reference ref,
-                  const BoundsOptions* bounds, int threads) {
+                  const BoundsOptions* bounds, int threads, const MeshValidity* known = nullptr,
+                  const std::vector<char>* moved = nullptr) {
   const int p = m.order, triangles = m.num_triangles(), n = m.num_elements_2d();
   const int q = bezier_size(p - 1);
   std::optional<LatticeSampling> sampling, quad_sampling;
@@ -148,6 +150,7 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
     v.ratio.resize(n);
     v.min_det.resize(n);
     v.relative_tolerance = bounds->relative_tolerance;
+    v.max_subdivisions = bounds->max_subdivisions;
     valid.resize(static_cast<std::size_t>(n));
     converged.resize(valid.size());
   }
@@ -166,6 +169,17 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
     LatticeSampling::Work quad_work(quad_sampling ? quad_sampling->size() : 0);
 #pragma omp for schedule(dynamic, 256)
     for (int e = 0; e < n; ++e) {
+      if (known) {
+        bool still = true;
+        for (const int i : element_node_indices(m, e)) still = still && !(*moved)[i];
+        if (still) {
+          v.ratio(e) = known->ratio(e);
+          v.min_det(e) = known->min_det(e);
+          valid[e] = known->min_det(e) > 0;  // valid_certified is min_lower > 0
+          converged[e] = known->converged[e];
+          continue;
+        }
+      }
       if (e >= triangles) {
         const int k = e - triangles;
         for (int i = 0; i < Xq.cols(); ++i) Xq.col(i) = m.x.col(m.quad(i, k));
@@ -196,9 +210,10 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
       if (sampling) sampling->measure(qs, ref, X, U, V, e, work, r.measures);
     }
   }
+  if (bounds) v.converged = std::move(converged);
   for (int e = 0; bounds && e < n; ++e) {
     v.invalid += valid[e] ? 0 : 1;
-    v.unconverged += converged[e] ? 0 : 1;
+    v.unconverged += v.converged[e] ? 0 : 1;
     if (v.worst_element < 0 || v.ratio(e) < v.worst) {
       v.worst = v.ratio(e);
       v.worst_element = e;
@@ -217,6 +232,11 @@ std::vector<MeshMeasure> mesh_measures(const Mesh& m, const std::vector<const Me
 MeshQuality mesh_quality(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
                          Reference ref, const BoundsOptions& opt, int threads) {
   return sweep(m, qs, lattice, ref, &opt, threads);
+}
+
+MeshValidity moved_elements_validity(const Mesh& m, const std::vector<char>& moved,
+                                     const MeshValidity& known, const BoundsOptions& opt) {
+  return sweep(m, {}, 0, Reference::ideal, &opt, 0, &known, &moved).validity;
 }
 
 }  // namespace homesh

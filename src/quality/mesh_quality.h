@@ -58,4 +58,10 @@ struct MeshQuality {
 MeshQuality mesh_quality(const Mesh& m, const std::vector<const Measure*>& qs, int lattice,
                          Reference ref, const BoundsOptions& opt = {}, int threads = 0);
 
+/// mesh_validity(m, opt) with the bounds of every element none of whose nodes
+/// moved (moved: #nodes) copied from `known`, a validity by the same options of
+/// a mesh with m's elements (mesh_validity.h's overload checks that).
+MeshValidity moved_elements_validity(const Mesh& m, const std::vector<char>& moved,
+                                     const MeshValidity& known, const BoundsOptions& opt);
+
 }  // namespace homesh

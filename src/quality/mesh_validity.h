@@ -25,16 +25,38 @@ struct MeshValidity {
   Eigen::VectorXd min_det;
   /// Elements not certified valid.
   int invalid = 0;
+  /// #2D elements: whether its bounds were refined to the tolerance.
+  std::vector<char> converged;
   /// Elements whose bounds reached max_subdivisions before the tolerance.
   int unconverged = 0;
   /// Smallest ratio and the 2D element holding it (-1 for an empty mesh).
   double worst = 1.0;
   int worst_element = -1;
-  /// The relative tolerance the bounds were refined to.
+  /// The options the bounds were refined by.
   double relative_tolerance = 0;
+  int max_subdivisions = 0;
 };
 
 /// Bounds of det J of every triangle and quadrilateral of m.
 MeshValidity mesh_validity(const Mesh& m, const BoundsOptions& opt = {});
+
+/// mesh_validity(m, opt), given `known`, the validity of `before`: where `before`
+/// has m's elements and `known` was refined by the same options, the elements
+/// whose nodes are all where they are in `before` keep its bounds (the same
+/// numbers: the bounds are a function of the nodes), and only the others are
+/// bounded again. Otherwise every element is.
+MeshValidity mesh_validity(const Mesh& m, const Mesh& before, const MeshValidity& known,
+                           const BoundsOptions& opt = {});
+
+/// A mesh and its certified validity, both optional (null: none known).
+struct KnownValidity {
+  const Mesh* mesh = nullptr;
+  const MeshValidity* validity = nullptr;
+};
+
+/// The overload above with known's mesh and validity, or mesh_validity(m, opt)
+/// if either is null.
+MeshValidity mesh_validity(const Mesh& m, const KnownValidity& known,
+                           const BoundsOptions& opt = {});
 
 }  // namespace homesh

@@ -74,6 +74,11 @@ TEST_CASE("optimise: never invalid, never a worse worst element", "[curving]") {
       REQUIRE(after.invalid == 0);
       REQUIRE(after.worst >= before.worst);
       REQUIRE(r.worst_after == Approx(after.worst));
+      // The result carries its validity; given the start's, the same mesh comes back.
+      CHECK((r.validity.ratio.array() == after.ratio.array()).all());
+      CHECK(r.validity.worst_element == after.worst_element);
+      const OptimiseResult again = optimise_mesh(m, boundary_nodes(m), opt, nullptr, &before);
+      CHECK((again.mesh.x.array() == r.mesh.x.array()).all());
     }
 }
 
