@@ -281,7 +281,7 @@ Stage voronoi_stage() {
   t.add(
       "lloyd", [](O& o) -> int& { return o.mesher.lloyd.iterations; },
       integer(0, 100, {{"auto", kAutoIterations}}),
-      "Lloyd iterations on the auto seeds (auto: 15 on exact cells, 10 on grown ones): each "
+      "Lloyd iterations on the auto seeds (auto: 10 on exact cells and on grown ones): each "
       "interior seed but the first front row "
       "moves to the metric centroid of its region (0: none)");
   t.add(

@@ -42,14 +42,17 @@ Eigen::Matrix2Xd region_centroids(const CartesianGrid& grid, const Eigen::Vector
 /// LloydOptions::iterations: kExactIterations on exact cells, kGrownIterations
 /// on grown ones (each a growth of the crystals on a grid).
 constexpr int kAutoIterations = -1;
-constexpr int kExactIterations = 15, kGrownIterations = 10;
+constexpr int kExactIterations = 10, kGrownIterations = 10;
 
 struct LloydOptions {
-  /// Moves of every free seed (0: none), or kAutoIterations: 15 on exact
+  /// Moves of every free seed (0: none), or kAutoIterations: 10 on exact
   /// cells, 10 on grown ones. On the corpus with the exact dual (docs/voronoi.md,
   /// 3 Dec 2026) 30, 15 and 10 exact steps all kept the worst and mean ICN
   /// above Gmsh frontal's on every model (mean margins: median 0.0078,
-  /// 0.0062, 0.0054); 15 costs about half of 30.
+  /// 0.0062, 0.0054). 15 were the default until 4 Dec 2026; 10 with 2
+  /// smoothing sweeps (VoronoiMeshOptions::smooth) took 0.89x the stage's time
+  /// (median over the 41 models, same hour), the least margins over frontal
+  /// 0.0846 worst, 0.0075 mean (0.0747, 0.0084 with 15 and 3).
   int iterations = kAutoIterations;
   /// A seed moves only if its centroid is this many cells (ds) inside the
   /// domain and from every other seed; otherwise it stays.
