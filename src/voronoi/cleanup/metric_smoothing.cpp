@@ -25,17 +25,27 @@ std::vector<Star> stars(Eigen::Index n, const Eigen::MatrixXi& tri) {
 }
 
 // The same metric for every triangle of a star: its determinant's root
-// taken once (metric_mean_ratio's value, to the last bit: the same products
-// in the same order).
+// taken once, and each triangle's edge opposite the node, w^T M w, which no
+// position of the node changes (metric_mean_ratio's value, to the last bit: the
+// same products in the same order).
 struct StarMetric {
   Eigen::Matrix2d M;
   double root_det;
-  explicit StarMetric(const Eigen::Matrix2d& m) : M(m), root_det(std::sqrt(m.determinant())) {}
-  double mean_ratio(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+  std::vector<double> opposite;  // per triangle of the star
+  StarMetric(const Eigen::Matrix2d& m, const Eigen::Matrix2Xd& x, const Star& s)
+      : M(m), root_det(std::sqrt(m.determinant())) {
+    opposite.reserve(s.size());
+    for (const auto& [a, b] : s) {
+      const Eigen::Vector2d w = x.col(b) - x.col(a);
+      opposite.push_back(w.dot(M * w));
+    }
+  }
+  // Triangle k of the star with the node at a.
+  double mean_ratio(std::size_t k, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                     const Eigen::Vector2d& c) const {
-    const Eigen::Vector2d u = b - a, v = c - a, w = c - b;
+    const Eigen::Vector2d u = b - a, v = c - a;
     const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
-    const double edges = u.dot(M * u) + v.dot(M * v) + w.dot(M * w);
+    const double edges = u.dot(M * u) + v.dot(M * v) + opposite[k];
     return edges > 0.0 ? 4.0 * std::sqrt(3.0) * area * root_det / edges : 0.0;
   }
 };
@@ -48,8 +58,8 @@ struct Patch {
 Patch patch(const Eigen::Matrix2Xd& x, const Star& s, const Eigen::Vector2d& p,
             const StarMetric& M) {
   Patch out{std::numeric_limits<double>::infinity(), 0.0};
-  for (const auto& [a, b] : s) {
-    const double q = M.mean_ratio(p, x.col(a), x.col(b));
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double q = M.mean_ratio(k, p, x.col(s[k][0]), x.col(s[k][1]));
     out.worst = std::min(out.worst, q);
     out.inverse += q > 0.0 ? 1.0 / q : std::numeric_limits<double>::infinity();
   }
@@ -119,7 +129,7 @@ int smooth_free_nodes(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       }
       laplace /= static_cast<double>(s.size());
       apex /= static_cast<double>(s.size());
-      const StarMetric star_metric(M);
+      const StarMetric star_metric(M, x, s);
       Patch best = patch(x, s, p, star_metric);
       // No worse worst triangle, and a smaller sum of inverse qualities.
       const auto smaller_sum = [](double floor) {
@@ -179,7 +189,7 @@ int raise_worst_triangle(Eigen::Matrix2Xd& x, const Eigen::MatrixXi& tri,
       const int v = tri(k, worst);
       if (!free_node[v]) continue;
       const Eigen::Vector2d p = x.col(v);
-      const StarMetric M(metric.metric_at(p));
+      const StarMetric M(metric.metric_at(p), x, star[v]);
       Patch best = patch(x, star[v], p, M);
       Eigen::Vector2d to = p;
       compass(x, star[v], M, 0.25 * (x.col(star[v].front()[0]) - p).norm(), to, best, raises_worst);
