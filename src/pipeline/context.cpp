@@ -16,6 +16,17 @@ void Context::require_cad(const std::string& stage) const {
                 " has no CAD geometry to mesh (give a .geo, .step or .brep)");
 }
 
+void Context::certify(MeshValidity v) {
+  const Mesh& m = require_mesh("certify");
+  Certified c;
+  c.mesh.order = m.order;  // what mesh_validity's reuse compares, not the classes and groups
+  c.mesh.x = m.x;
+  c.mesh.tri = m.tri;
+  c.mesh.quad = m.quad;
+  c.validity = std::move(v);
+  certified = std::move(c);
+}
+
 MeshValidity Context::mesh_validity() const {
   if (!mesh) throw Error("the certified validity of " + input + ": no mesh");
   if (!certified) return homesh::mesh_validity(*mesh);

@@ -37,13 +37,17 @@ struct Context {
   /// Save, ...: gmsh/geo_commands.h); refused otherwise.
   bool trust_geo = false;
 
-  /// A state of `mesh` and its certified validity, where a stage had them at
-  /// hand: mesh_validity() reuses its bounds for the elements still as they were.
+  /// A state of `mesh` (its order, nodes and elements only) and its certified
+  /// validity, where a stage had them at hand: mesh_validity() reuses its bounds
+  /// for the elements still as they were.
   struct Certified {
     Mesh mesh;
     MeshValidity validity;
   };
   std::optional<Certified> certified;
+
+  /// Records v as the certified validity of the mesh as it is now.
+  void certify(MeshValidity v);
 
   /// The certified validity of the mesh (default bounds), reusing `certified`.
   MeshValidity mesh_validity() const;

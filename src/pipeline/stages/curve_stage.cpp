@@ -132,7 +132,7 @@ void run(Context& ctx, const CurveOptions& o) {
   ctx.results["elastic_seconds"] = c.elastic_seconds;
   ctx.results["optimise_seconds"] = c.optimise_seconds;
   m = std::move(c.mesh);
-  if (c.validity.ratio.size() > 0) ctx.certified = Context::Certified{m, std::move(c.validity)};
+  if (c.validity.ratio.size() > 0) ctx.certify(std::move(c.validity));
   ctx.fields.clear();
 }
 
