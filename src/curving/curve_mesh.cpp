@@ -224,9 +224,9 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   // elements stay below the threshold and a pass still lifts the worst by kPassGain.
   auto optimise = [&] {
     const auto t = std::chrono::steady_clock::now();
+    // An empty validity (no increment accepted) is bounded afresh by the optimiser.
     OptimiseResult o =
-        optimise_mesh(r.deform.mesh, none, opt.optimiser, curves,
-                      r.deform.validity.ratio.size() > 0 ? &r.deform.validity : nullptr);
+        optimise_mesh(r.deform.mesh, none, opt.optimiser, curves, &r.deform.validity);
     for (int pass = 1; pass < opt.optimise_passes && o.worst_after < opt.optimiser.threshold;
          ++pass) {
       OptimiseResult next = optimise_mesh(o.mesh, none, opt.optimiser, curves, &o.validity);

@@ -137,7 +137,8 @@ struct OptimiseResult {
 /// where fixed[i] (#nodes) held, and the boundary nodes on curves that
 /// `curves` slides (none if null) sliding as opt.slide says. Throws
 /// homesh::Error on a wrong `fixed` size or bad options. `known`, if given, is
-/// m's validity (reused where its bounds are opt.bounds: a speed-up only).
+/// m's validity, reused where it fits (mesh_validity.h's overload: opt.bounds, m's
+/// elements; an empty one is bounded afresh): a speed-up only.
 OptimiseResult optimise_mesh(const Mesh& m, const std::vector<bool>& fixed,
                              const OptimiseOptions& opt = {},
                              const CurveEvaluator* curves = nullptr,

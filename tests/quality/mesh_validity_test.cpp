@@ -3,26 +3,11 @@
 #include <catch2/catch.hpp>
 
 #include "../fem/fem_test_support.h"
+#include "validity_test_support.h"
 
 using namespace homesh;
 
-namespace {
-
-// Every number of two validities equal, to the bit.
-void require_same(const MeshValidity& a, const MeshValidity& b) {
-  REQUIRE(a.ratio.size() == b.ratio.size());
-  CHECK((a.ratio.array() == b.ratio.array()).all());
-  CHECK((a.min_det.array() == b.min_det.array()).all());
-  CHECK(a.converged == b.converged);
-  CHECK(a.invalid == b.invalid);
-  CHECK(a.unconverged == b.unconverged);
-  CHECK(a.worst == b.worst);
-  CHECK(a.worst_element == b.worst_element);
-  CHECK(a.relative_tolerance == b.relative_tolerance);
-  CHECK(a.max_subdivisions == b.max_subdivisions);
-}
-
-}  // namespace
+using homesh::test::require_same_validity;
 
 TEST_CASE("mesh_validity from a known state bounds only the moved elements, to the same numbers",
           "[quality]") {
@@ -38,19 +23,20 @@ TEST_CASE("mesh_validity from a known state bounds only the moved elements, to t
   after.x.col(after.tri(4, 7)) += Eigen::Vector2d(0.01, 0.02);
   const MeshValidity fresh = mesh_validity(after, opt);
   REQUIRE(fresh.invalid >= 1);
-  require_same(mesh_validity(after, before, known, opt), fresh);
-  require_same(mesh_validity(after, {&before, &known}, opt), fresh);
-  require_same(mesh_validity(before, before, known, opt), known);
+  require_same_validity(mesh_validity(after, before, known, opt), fresh);
+  require_same_validity(mesh_validity(after, {&before, &known}, opt), fresh);
+  require_same_validity(mesh_validity(before, before, known, opt), known);
 
   // Reuse needs the same bounds options and the same elements: otherwise all are bounded again.
   BoundsOptions finer = opt;
   finer.relative_tolerance = 1e-5;
   finer.max_subdivisions = 1000;
-  require_same(mesh_validity(after, before, known, finer), mesh_validity(after, finer));
+  require_same_validity(mesh_validity(after, before, known, finer), mesh_validity(after, finer));
   Mesh renumbered = after;
   renumbered.tri.col(0).swap(renumbered.tri.col(1));
-  require_same(mesh_validity(renumbered, before, known, opt), mesh_validity(renumbered, opt));
-  require_same(mesh_validity(after, {nullptr, &known}, opt), fresh);
+  require_same_validity(mesh_validity(renumbered, before, known, opt),
+                        mesh_validity(renumbered, opt));
+  require_same_validity(mesh_validity(after, {nullptr, &known}, opt), fresh);
 
   // The known bounds are copied, not recomputed: a made-up ratio of an element that did
   // not move comes back (the caller vouches for `known`).
