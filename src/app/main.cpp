@@ -10,6 +10,7 @@
 #include "core/allocator_tuning.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "fem/cholmod_memory.h"
 #include "pipeline/output_format.h"
 #include "pipeline/run_pipeline.h"
 #include "pipeline/stage_registry.h"
@@ -151,7 +152,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  homesh::tune_allocator();  // core/allocator_tuning.h says why
+  homesh::tune_allocator();        // core/allocator_tuning.h says why
+  homesh::route_cholmod_memory();  // fem/cholmod_memory.h says why
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   // Past a file-size limit, writes fail with EFBIG and homesh says so, instead

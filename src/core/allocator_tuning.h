@@ -28,6 +28,8 @@
 // glibc's own settings 0.81-0.96 and 0.78-1.32. The same on the smaller runs (within the
 // scatter) and on flap_gap02_bl_1e-4 p = 5 (4.5-5.2 s, 4.5-6.5 with huge pages).
 //
+// CHOLMOD's large blocks do get huge pages, one mapping each (fem/cholmod_memory.h).
+//
 // The CLI and the Python module call it at start; a C++ caller of the library
 // may. HOMESH_MALLOC=default in the environment leaves glibc's settings alone,
 // HOMESH_MALLOC=huge-pages adds the huge pages (no-huge-pages, or anything else: the

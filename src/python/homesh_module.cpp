@@ -11,6 +11,7 @@
 
 #include "api/homesh.h"
 #include "core/allocator_tuning.h"
+#include "fem/cholmod_memory.h"
 
 namespace py = pybind11;
 
@@ -67,7 +68,8 @@ void write_file(const std::string& path, bool keep_invalid) {
 PYBIND11_MODULE(homesh, m) {
   using namespace homesh;
   m.doc() = "homesh: curved, valid high-order triangle meshes on the current Gmsh model";
-  tune_allocator();  // core/allocator_tuning.h says why (HOMESH_MALLOC=default: not)
+  tune_allocator();        // core/allocator_tuning.h says why (HOMESH_MALLOC=default: not)
+  route_cholmod_memory();  // fem/cholmod_memory.h says why
   static py::exception<Error> error(m, "Error");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
