@@ -170,7 +170,7 @@ double distortion_energy_hessian(const Eigen::Matrix2Xd& X, const ElementTabulat
     const double v = di / mA;
     const double z = 0.5 * (v + 1 / v) - 1, z1 = 0.5 * (1 - 1 / (v * v)), z2 = 1 / (v * v * v);
     const double theta = std::max(0.0, s + alpha * z);
-    const double t_r = std::pow(theta, r), t_r1 = r == 2 ? theta : std::pow(theta, r - 1);
+    const double t_r1 = r == 2 ? theta : std::pow(theta, r - 1), t_r = t_r1 * theta;
     const double t_r2 = r == 2 ? 1.0 : std::pow(theta, r - 2);
     // theta's derivatives by J (through s and v) and by A (through v: dv/dA = -v / A).
     const Vec4 sJ = gJ / di - (s + 1) / di * C;
@@ -240,6 +240,16 @@ double distortion_energy_hessian(const Eigen::Matrix2Xd& X, const ElementTabulat
         const auto hu = H4.row(c1 + 4 * (c2 + 2 * b));      // a = u: row c1, col c2 + 2b
         const auto hv = H4.row(c1 + 2 + 4 * (c2 + 2 * b));  // a = v
         Y.middleCols(b * q, q) = tab.dNdu * hu.asDiagonal() + tab.dNdv * hv.asDiagonal();
+      }
+      if (c1 == c2) {
+        // A diagonal block is symmetric: its lower triangle (k >= l) only.
+        B.triangularView<Eigen::Lower>() = Y * W.transpose();
+        for (int l = 0; l < n; ++l)
+          for (int k = l; k < n; ++k) {
+            hessian(2 * k + c1, 2 * l + c1) = B(k, l);
+            hessian(2 * l + c1, 2 * k + c1) = B(k, l);
+          }
+        continue;
       }
       B.noalias() = Y * W.transpose();
       for (int k = 0; k < n; ++k)
