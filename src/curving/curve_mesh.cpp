@@ -75,33 +75,37 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   // elements' edges, or else moved with the wall near it; the better guess is kept.
   if (opt.accept_placed <= 1) {
     const auto guessing = std::chrono::steady_clock::now();
-    Mesh on_wall = raised;
-    for (int i = 0; i < on_wall.num_nodes(); ++i)
-      if (boundary[i]) on_wall.x.col(i) = target.col(i);
-    std::vector<Mesh> guesses;
-    Mesh propagated;
+    // One mesh holds the guesses in turn (they differ in their nodes only): the blended
+    // guess, then the propagated one's nodes swapped in; the better is kept.
+    placed = raised;
+    for (int i = 0; i < placed.num_nodes(); ++i)
+      if (boundary[i]) placed.x.col(i) = target.col(i);
+    Eigen::Matrix2Xd other;  // the propagated guess's nodes
     if (opt.propagate > 0) {
       // From the straight interior: propagation moves every free node near the wall.
       std::vector<bool> free(raised.num_nodes());
       for (int i = 0; i < raised.num_nodes(); ++i)
         free[i] = !boundary[i] && !(opt.fixed_vertices && vertex[i]);
-      propagated = on_wall;
-      propagated.x += propagate_wall_displacement(raised, target, free, opt.propagate);
+      other = placed.x + propagate_wall_displacement(raised, target, free, opt.propagate);
     }
-    if (opt.blend) blend_interiors(on_wall, boundary);
-    guesses.push_back(std::move(on_wall));
-    if (opt.propagate > 0) guesses.push_back(std::move(propagated));
-    MeshValidity v;
-    for (std::size_t g = 0; g < guesses.size(); ++g) {
-      MeshValidity w = mesh_validity(guesses[g], opt.optimiser.bounds);
-      if (g == 0 || w.invalid < v.invalid || (w.invalid == v.invalid && w.worst > v.worst)) {
-        v = std::move(w);
-        placed = std::move(guesses[g]);
-        placed_validity = v;
-        r.guess = g == 1 ? "propagated" : opt.blend ? "blended" : "straight";
+    if (opt.blend) blend_interiors(placed, boundary);
+    placed_validity = mesh_validity(placed, opt.optimiser.bounds);
+    r.guess = opt.blend ? "blended" : "straight";
+    const auto good = [&](const MeshValidity& w) {
+      return w.invalid == 0 && w.worst >= opt.accept_placed;
+    };
+    if (opt.propagate > 0 && !good(placed_validity)) {
+      placed.x.swap(other);
+      MeshValidity w = mesh_validity(placed, opt.optimiser.bounds);
+      if (w.invalid < placed_validity.invalid ||
+          (w.invalid == placed_validity.invalid && w.worst > placed_validity.worst)) {
+        placed_validity = std::move(w);
+        r.guess = "propagated";
+      } else {
+        placed.x.swap(other);
       }
-      if (v.invalid == 0 && v.worst >= opt.accept_placed) break;
     }
+    const MeshValidity& v = placed_validity;
     r.placed_worst = v.invalid == 0 ? v.worst : 0;
     r.guess_seconds = since(guessing);
     if (v.invalid == 0 && v.worst >= opt.accept_placed) {
@@ -118,7 +122,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
           r.polished = true;
           r.worst_ratio = d.worst_ratio;
           r.deform = std::move(d);
-          r.mesh = r.deform.mesh;
+          r.mesh = std::move(r.deform.mesh);
           r.validity = r.deform.validity;
           r.seconds = since(start);
           return r;

@@ -149,7 +149,8 @@ struct CurveResult {
   bool polished = false;           ///< step 1's guess sufficed, then solved round its poorest
   std::string guess = "straight";  ///< step 1's guess kept: straight, blended or propagated
   double placed_worst = 0;         ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
-  DeformResult deform;             ///< of the last solve (if any)
+  DeformResult deform;             ///< of the last solve (if any; its mesh moved to `mesh`
+                                   ///< where that is the result)
   /// The result comes from step 1's valid guess, not the solve: the solve fell short of it
   /// (incomplete, or poorer), and the guess was kept or optimised better than the solve.
   bool guess_over_solve = false;
