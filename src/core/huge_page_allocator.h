@@ -7,6 +7,7 @@
 // "never"), or the array is small, it is an ordinary allocation (aligned to
 // a cache line).
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -55,6 +56,23 @@ struct HugePageAllocator {
     return false;
   }
 };
+
+/// Advises the whole 2 MiB pages inside [p, p + bytes) for transparent huge pages, for
+/// an array allocated but not yet touched (a large malloc block is fresh pages in a
+/// fresh process); true if some range was advised. A hint: pages already touched keep
+/// their size.
+inline bool advise_huge_pages(void* p, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+  const auto begin = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t a = (begin + kHuge - 1) & ~(kHuge - 1), b = (begin + bytes) & ~(kHuge - 1);
+  return b > a && madvise(reinterpret_cast<void*>(a), b - a, MADV_HUGEPAGE) == 0;
+#else
+  (void)p;
+  (void)bytes;
+  return false;
+#endif
+}
 
 /// A std::vector in huge pages once it is large.
 template <class T>

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/huge_page_allocator.h"
+
 namespace homesh {
 namespace {
 
@@ -61,7 +63,11 @@ bool inside_loops(const std::vector<Eigen::Matrix2Xd>& loops, const Eigen::Vecto
 
 Eigen::VectorXd loop_signed_distance(const CartesianGrid& g,
                                      const std::vector<Eigen::Matrix2Xd>& loops, double band) {
-  Eigen::VectorXd dist = Eigen::VectorXd::Constant(g.node_count(), band);
+  // A large field is fresh memory in huge pages (core/huge_page_allocator.h): 4 MB in
+  // 4 KiB pages cost ellipse10_bl_1e-4's voronoi 13 ms of faults.
+  Eigen::VectorXd dist(g.node_count());
+  advise_huge_pages(dist.data(), static_cast<std::size_t>(dist.size()) * sizeof(double));
+  dist.setConstant(band);
   const std::vector<Eigen::Matrix2Xd> coarse = decimated(loops, kChordTolerance * g.ds());
   const auto clamp_i = [&](double v) { return std::clamp(static_cast<int>(v), 0, g.nx - 1); };
   const auto clamp_j = [&](double v) { return std::clamp(static_cast<int>(v), 0, g.ny - 1); };

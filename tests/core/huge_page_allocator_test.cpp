@@ -1,0 +1,69 @@
+// The huge-page allocator and advice (core/huge_page_allocator.h): large vectors start
+// on a 2 MiB boundary and small ones on a cache line; the advice covers exactly the
+// whole 2 MiB pages inside a range, and the kernel keeps it (/proc/self/smaps).
+#include "core/huge_page_allocator.h"
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace homesh;
+
+namespace {
+
+constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+
+// Whether the mapping holding address a carries the huge-page advice ("hg").
+bool advised(std::uintptr_t a) {
+  std::ifstream smaps("/proc/self/smaps");
+  std::string line;
+  bool in = false;
+  while (std::getline(smaps, line)) {
+    std::uintptr_t lo = 0, hi = 0;
+    char dash = 0;
+    std::istringstream head(line);
+    if (head >> std::hex >> lo >> dash >> hi && dash == '-') {
+      in = lo <= a && a < hi;
+      continue;
+    }
+    if (in && line.rfind("VmFlags:", 0) == 0) return line.find(" hg") != std::string::npos;
+  }
+  return false;
+}
+
+bool thp_kernel() { return std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good(); }
+
+}  // namespace
+
+TEST_CASE("huge pages: vectors aligned by size", "[core]") {
+  HugeVector<double> big(3 << 18);  // 6 MiB
+  HugeVector<double> small(100);
+  CHECK(reinterpret_cast<std::uintptr_t>(big.data()) % kHuge == 0);
+  CHECK(reinterpret_cast<std::uintptr_t>(small.data()) % 64 == 0);
+  big.back() = small.back() = 1.0;
+  CHECK(big.back() + small.back() == 2.0);
+}
+
+TEST_CASE("huge pages: the advice covers the whole 2 MiB pages inside the range", "[core]") {
+  void* block = std::aligned_alloc(kHuge, 8 * kHuge);
+  REQUIRE(block != nullptr);
+  const auto base = reinterpret_cast<std::uintptr_t>(block);
+  // No whole page inside: nothing advised.
+  CHECK_FALSE(advise_huge_pages(reinterpret_cast<void*>(base + 4096), kHuge));
+  CHECK_FALSE(advise_huge_pages(block, kHuge - 1));
+#if defined(__linux__)
+  // From mid-page 1 to mid-page 4: pages 2 and 3 only.
+  const bool ok = advise_huge_pages(reinterpret_cast<void*>(base + kHuge + 4096), 3 * kHuge);
+  CHECK(ok == thp_kernel());
+  if (ok) {
+    CHECK_FALSE(advised(base + kHuge));
+    CHECK(advised(base + 2 * kHuge));
+    CHECK(advised(base + 3 * kHuge + kHuge - 1));
+    CHECK_FALSE(advised(base + 4 * kHuge));
+  }
+#endif
+  std::free(block);
+}
