@@ -196,12 +196,18 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   // 0.951 / 0.842, plate_holes_layers_1e-3 p = 3 0.808 / 0.931).
   DeformResult guess_start;
   if (r.placed_worst > 0 && !(r.deform.complete && r.deform.worst_ratio >= r.placed_worst)) {
+    // The solve's statistics with the guess's mesh and validity (the solve's mesh and
+    // validity set aside meanwhile, not copied).
+    Mesh solved = std::move(r.deform.mesh);
+    MeshValidity solved_validity = std::move(r.deform.validity);
     guess_start = r.deform;
+    r.deform.mesh = std::move(solved);
+    r.deform.validity = std::move(solved_validity);
     guess_start.mesh = std::move(placed);
     guess_start.complete = true;
     guess_start.reached = 1;
     guess_start.worst_ratio = r.placed_worst;
-    guess_start.validity = placed_validity;
+    guess_start.validity = std::move(placed_validity);
   }
   if (!r.deform.complete && guess_start.complete) {
     r.deform = std::move(guess_start);
