@@ -189,15 +189,15 @@ class PatchOptimiser {
   // C(u) of sliding node `node`'s curve, u kept in the range of an open curve and
   // wrapped into it for the evaluator on a closed one.
   Eigen::Vector2d on_curve(int node, double u, Eigen::Vector2d* tangent) const {
-    return sliding_.curves->point(sliding_.tag[node], wrap_parameter(sliding_.range[node], u),
+    return sliding_.curves->point(sliding_.tag(node), wrap_parameter(sliding_.range(node), u),
                                   tangent);
   }
 
   // Node i sliding: a Newton step in its curve parameter u, backtracked as move_node.
   void slide_node(int i) {
     const int node = patch_.free_nodes[i];
-    const CurveRange& range = sliding_.range[node];
-    const double u0 = sliding_.u[node];
+    const CurveRange& range = sliding_.range(node);
+    const double u0 = sliding_.u(node);
     const Eigen::Vector2d x0 = x_.col(node);
     Eigen::Vector2d g, tangent;
     on_curve(node, u0, &tangent);
@@ -224,7 +224,7 @@ class PatchOptimiser {
     for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
       x_.col(node) = on_curve(node, u0 + t * du, nullptr);
       if (accept(i, E0, t, slope)) {
-        sliding_.u[node] = u0 + t * du;
+        sliding_.u(node) = u0 + t * du;
         return;
       }
     }
@@ -236,7 +236,7 @@ class PatchOptimiser {
   // patch's worst at the start (so a patch is reverted only by rounding).
   void move_node(int i) {
     const int node = patch_.free_nodes[i];
-    if (sliding_.tag[node] >= 0) {
+    if (sliding_.slides(node)) {
       slide_node(i);
       return;
     }
@@ -344,17 +344,14 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
   const std::vector<bool> vertex = vertex_nodes(m);
   SlidingNodes sliding;
   sliding.curves = curves;
-  sliding.tag.assign(m.num_nodes(), -1);
-  sliding.u.assign(m.num_nodes(), 0.0);
-  sliding.range.resize(m.num_nodes());
+  sliding.reset(m.num_nodes());
   if (curves && opt.slide != OptimiseOptions::Slide::none)
     for (int i = 0; i < m.num_nodes(); ++i) {
       const NodeClass& c = m.node_class[i];
       if (fixed[i] || c.dim != 1 || !curves->slides(c.tag)) continue;
       if (vertex[i] && opt.slide != OptimiseOptions::Slide::all) continue;
-      sliding.tag[i] = c.tag;
-      sliding.u[i] = std::isfinite(c.u) ? c.u : curves->parameter(c.tag, m.x.col(i));
-      sliding.range[i] = curves->range(c.tag);
+      sliding.add(i, c.tag, std::isfinite(c.u) ? c.u : curves->parameter(c.tag, m.x.col(i)),
+                  curves->range(c.tag));
     }
   // Held: the caller's nodes, the boundary nodes that do not slide, every node of an
   // element not certified valid (no untangling: the barrier needs a valid start; such
@@ -363,7 +360,7 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
   std::vector<bool> held = fixed;
   const std::vector<bool> boundary = boundary_nodes(m);
   for (int i = 0; i < m.num_nodes(); ++i)
-    held[i] = held[i] || (sliding.tag[i] < 0 && (boundary[i] || (vertex[i] && !opt.free_vertices)));
+    held[i] = held[i] || (!sliding.slides(i) && (boundary[i] || (vertex[i] && !opt.free_vertices)));
   for (int e = 0; e < m.num_elements_2d(); ++e)
     if (!valid[e])
       for (int i : element_node_indices(m, e)) held[i] = true;
@@ -395,7 +392,7 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
     std::vector<double> start_u(patch.free_nodes.size());
     for (int i = 0; i < start.cols(); ++i) {
       start.col(i) = x.col(patch.free_nodes[i]);
-      start_u[i] = sliding.u[patch.free_nodes[i]];
+      start_u[i] = sliding.slides(patch.free_nodes[i]) ? sliding.u(patch.free_nodes[i]) : 0.0;
     }
     PatchOptimiser po(m, x, sliding, patch, tab, quad_tab, opt, worst);
     PatchOutcome& o = outcome[k];
@@ -436,7 +433,7 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
     } else {
       for (int i = 0; i < start.cols(); ++i) {
         x.col(patch.free_nodes[i]) = start.col(i);
-        sliding.u[patch.free_nodes[i]] = start_u[i];
+        if (sliding.slides(patch.free_nodes[i])) sliding.u(patch.free_nodes[i]) = start_u[i];
       }
     }
   }
@@ -449,9 +446,9 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
     ++res.accepted;
     res.moved_nodes += static_cast<int>(patches[k].free_nodes.size());
     for (int i : patches[k].free_nodes) {
-      if (sliding.tag[i] < 0) continue;
+      if (!sliding.slides(i)) continue;
       ++res.sliding_nodes;
-      res.mesh.node_class[i].u = wrap_parameter(sliding.range[i], sliding.u[i]);
+      res.mesh.node_class[i].u = wrap_parameter(sliding.range(i), sliding.u(i));
     }
     res.energy_before += o.energy_before;
     res.energy_after += o.energy_after;

@@ -86,7 +86,7 @@ class PatchNewton {
     const int nf = static_cast<int>(free_.size());
     std::vector<Eigen::Vector2d> tangent(nf);
     for (int i = 0; i < nf; ++i)
-      if (sliding(i)) s_.point(free_[i], s_.u[free_[i]], &tangent[i]);
+      if (sliding(i)) s_.point(free_[i], s_.u(free_[i]), &tangent[i]);
     g.setZero(dofs());
     std::fill_n(H_.valuePtr(), H_.nonZeros(), 0.0);
     const int* outer = H_.outerIndexPtr();
@@ -164,7 +164,7 @@ class PatchNewton {
     u0_.resize(free_.size());
     for (std::size_t i = 0; i < free_.size(); ++i) {
       x0_.col(i) = x_.col(free_[i]);
-      u0_[i] = s_.u[free_[i]];
+      u0_[i] = sliding(i) ? s_.u(free_[i]) : 0.0;
     }
   }
 
@@ -174,12 +174,12 @@ class PatchNewton {
       const int node = free_[i];
       if (t == 0) {
         x_.col(node) = x0_.col(i);
-        s_.u[node] = u0_[i];
+        if (sliding(i)) s_.u(node) = u0_[i];
       } else if (sliding(i)) {
-        const CurveRange& r = s_.range[node];
+        const CurveRange& r = s_.range(node);
         double u = u0_[i] + t * step(first_[i]);
         if (!r.closed) u = std::clamp(u, r.a, r.b);
-        s_.u[node] = u;
+        s_.u(node) = u;
         x_.col(node) = s_.point(node, u);
       } else {
         x_.col(node) = x0_.col(i) + t * step.segment<2>(first_[i]);
@@ -193,7 +193,7 @@ class PatchNewton {
     int free;  // index into free_
   };
 
-  bool sliding(int i) const { return s_.tag[free_[i]] >= 0; }
+  bool sliding(int i) const { return s_.slides(free_[i]); }
 
   const Eigen::Matrix2Xd& gather(std::size_t le) {
     const auto nodes = element_node_indices(m_, elements_[le]);

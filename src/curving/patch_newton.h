@@ -41,17 +41,39 @@
 
 namespace homesh {
 
-/// Nodes sliding along curves: tag[i] the curve of node i (-1: not sliding),
-/// u[i] its parameter (kept unwrapped on closed curves while optimising),
-/// range[i] that of tag[i]'s curve.
+/// Nodes sliding along curves. The arrays are per sliding node (a p = 5 mesh's boundary
+/// is a few percent of its nodes), `slot` per node: its place in them, -1 if it does not
+/// slide. u: the parameter (kept unwrapped on closed curves while optimising); range:
+/// that of the node's curve.
 struct SlidingNodes {
   const CurveEvaluator* curves = nullptr;
-  std::vector<int> tag;
-  std::vector<double> u;
-  std::vector<CurveRange> range;
+  std::vector<int> slot;  ///< per node
+  std::vector<int> tags;
+  std::vector<double> params;
+  std::vector<CurveRange> ranges;
+
+  /// n nodes, none sliding.
+  void reset(int n) {
+    slot.assign(n, -1);
+    tags.clear();
+    params.clear();
+    ranges.clear();
+  }
+  /// Node i slides along curve `tag` (range r) from parameter u.
+  void add(int i, int tag, double u, const CurveRange& r) {
+    slot[i] = static_cast<int>(tags.size());
+    tags.push_back(tag);
+    params.push_back(u);
+    ranges.push_back(r);
+  }
+  bool slides(int i) const { return slot[i] >= 0; }
+  int tag(int i) const { return tags[slot[i]]; }
+  double& u(int i) { return params[slot[i]]; }
+  double u(int i) const { return params[slot[i]]; }
+  const CurveRange& range(int i) const { return ranges[slot[i]]; }
   /// C(u) of node i's curve (u wrapped into the range on a closed curve).
   Eigen::Vector2d point(int i, double u, Eigen::Vector2d* tangent = nullptr) const {
-    return curves->point(tag[i], wrap_parameter(range[i], u), tangent);
+    return curves->point(tag(i), wrap_parameter(range(i), u), tangent);
   }
 };
 
