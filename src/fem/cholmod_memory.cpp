@@ -41,8 +41,6 @@ Registry& registry() {
   return *r;
 }
 
-std::size_t rounded(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
-
 #if defined(HOMESH_MAPPED_BLOCKS)
 // A fresh mapping of `bytes` (a multiple of kHugePage) at a kHugePage boundary, advised
 // for huge pages; nullptr if the kernel refuses.
@@ -56,9 +54,7 @@ void* map_block(std::size_t bytes) {
   if (p > start) munmap(start, static_cast<std::size_t>(p - start));
   char* const end = start + span;
   if (end > p + bytes) munmap(p + bytes, static_cast<std::size_t>(end - (p + bytes)));
-#if defined(MADV_HUGEPAGE)
-  madvise(p, bytes, MADV_HUGEPAGE);  // a hint: refused, the block has small pages
-#endif
+  advise_huge_pages(p, bytes);  // a hint: refused, the block has small pages
   return p;
 }
 #endif
@@ -68,7 +64,7 @@ void* map_block(std::size_t bytes) {
 void* allocate(std::size_t bytes) {
 #if defined(HOMESH_MAPPED_BLOCKS)
   if (bytes < kHugePage) return std::malloc(bytes);
-  const std::size_t need = rounded(bytes);
+  const std::size_t need = whole_huge_pages(bytes);
   Registry& r = registry();
   {
     // The smallest kept block that fits and wastes at most its half.

@@ -24,6 +24,8 @@
 // HOMESH_MALLOC=default declines both. A no-op without CHOLMOD or off Linux.
 #include <cstddef>
 
+#include "core/huge_page_allocator.h"
+
 namespace homesh {
 
 /// Routes CHOLMOD's allocations as above, once per process; whether they are routed
@@ -33,7 +35,7 @@ bool route_cholmod_memory();
 /// The routed allocation functions themselves (usable without the routing; tests).
 namespace cholmod_memory {
 
-constexpr std::size_t kHugePage = std::size_t{2} << 20;     ///< the smallest block mapped
+constexpr std::size_t kHugePage = kHugePageBytes;           ///< the smallest block mapped
 constexpr std::size_t kKeptBytes = std::size_t{256} << 20;  ///< freed blocks kept at most
 
 void* allocate(std::size_t bytes);
