@@ -35,3 +35,32 @@ TEST_CASE(
   CHECK(propagate_wall_displacement(m, target, free, 3.0)(1, 5) ==
         Approx(0.1 * (1 - 3 * r * r + 2 * r * r * r)).epsilon(1e-12));
 }
+
+TEST_CASE(
+    "wall propagation: wall lines far apart for their length (the cells by hash) move nodes "
+    "as lines alone do",
+    "[curving]") {
+  // The first test's wall line twice, the copy 1e4 lengths away in x and y: their cells'
+  // bounding box is 1e7 cells, past the dense grid, so the lines are found by hashing.
+  const double far = 1e4;
+  Mesh m;
+  m.order = 2;
+  m.x.resize(2, 10);
+  m.x << 0, 1, 0.5, 0.5, 0.25, 0.5, far, far + 1, far + 0.5, far + 0.25,  //
+      0, 0, 0, 0.25, 0.5, 2.0, far, far, far, far + 0.5;
+  m.line.resize(3, 2);
+  m.line << 0, 6, 1, 7, 2, 8;
+  Eigen::Matrix2Xd target = m.x;
+  target.col(2) << 0.5, 0.1;
+  target.col(8) << far + 0.5, far + 0.1;
+  std::vector<bool> free(10, false);
+  free[3] = free[4] = free[5] = free[9] = true;
+  const Eigen::Matrix2Xd u = propagate_wall_displacement(m, target, free, 1.0);
+  const double decay = 1 - 3 * 0.0625 + 2 * 0.015625;
+  CHECK(u(1, 3) == Approx(0.1 * decay).epsilon(1e-12));
+  CHECK(u(1, 4) == Approx(0.075 * 0.5).epsilon(1e-12));
+  CHECK(u.col(5).norm() == 0);
+  // Node 9 stands to the copy as node 4 to the first line.
+  CHECK(u(0, 9) == Approx(0).margin(1e-12));
+  CHECK(u(1, 9) == Approx(0.075 * 0.5).epsilon(1e-9));
+}
