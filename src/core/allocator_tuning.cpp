@@ -40,12 +40,17 @@ bool advise_heap() {
 
 }  // namespace
 
+bool allocator_tuning_declined() {
+  const char* env = std::getenv("HOMESH_MALLOC");
+  return env && std::strcmp(env, "default") == 0;
+}
+
 const AllocatorTuning& tune_allocator() {
   static const AllocatorTuning applied = [] {
     AllocatorTuning t;
-    const char* env = std::getenv("HOMESH_MALLOC");
-    if (env && std::strcmp(env, "default") == 0) return t;
+    if (allocator_tuning_declined()) return t;
 #if defined(__GLIBC__)
+    const char* env = std::getenv("HOMESH_MALLOC");
     t.thresholds = mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1 &&
                    mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1;
     if (t.thresholds && env && std::strcmp(env, "huge-pages") == 0) t.huge_pages = advise_heap();

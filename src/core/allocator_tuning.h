@@ -46,4 +46,8 @@ struct AllocatorTuning {
 /// Applies the tuning above once (later calls return the first call's outcome).
 const AllocatorTuning& tune_allocator();
 
+/// Whether the environment declines homesh's allocator tuning (HOMESH_MALLOC=default):
+/// tune_allocator's and fem/cholmod_memory.h's.
+bool allocator_tuning_declined();
+
 }  // namespace homesh

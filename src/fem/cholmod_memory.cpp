@@ -9,6 +9,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/allocator_tuning.h"
+
 #if defined(__linux__)
 #include <malloc.h>
 #include <sys/mman.h>
@@ -161,8 +163,7 @@ Stats stats() {
 
 bool route_cholmod_memory() {
   static const bool routed = [] {
-    const char* env = std::getenv("HOMESH_MALLOC");
-    if (env && std::strcmp(env, "default") == 0) return false;
+    if (allocator_tuning_declined()) return false;
 #if defined(HOMESH_WITH_CHOLMOD) && defined(HOMESH_MAPPED_BLOCKS)
     SuiteSparse_config.malloc_func = cholmod_memory::allocate;
     SuiteSparse_config.calloc_func = cholmod_memory::allocate_zeroed;
