@@ -6,7 +6,9 @@ namespace homesh {
 
 LinearSystem assemble_elasticity(const Mesh& m, const ElasticityCoefficients& c,
                                  const AssemblyOptions& options) {
-  const ElasticityAssembler assembler(m, {}, options);
+  AssemblyOptions whole = options;
+  whole.condense = false;
+  const ElasticityAssembler assembler(m, {}, whole);
   EliminatedSystem lower;
   assembler.assemble(m.x, c, lower);
   LinearSystem sys;

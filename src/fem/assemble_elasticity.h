@@ -16,6 +16,19 @@ struct AssemblyOptions {
   /// of parallelograms (quad_stiffness_quadrature_degree), for curved elements
   /// and varying coefficients; the body force and thermal terms use the same rules.
   int quadrature_margin = 2;
+  /// Static condensation in the repeated assembly (fem/elasticity_assembler.h): the
+  /// dofs of nodes in one element only, both components free (the interior nodes of
+  /// triangles from p = 3 and of quadrilaterals from p = 2), are eliminated element by
+  /// element before the global system is formed and recovered from its solution
+  /// (Guyan, AIAA J. 3, 1965; the standard treatment of high-order elements' bubble
+  /// modes, e.g. Karniadakis & Sherwin, "Spectral/hp element methods", 2005, Sec 4.2).
+  /// The same displacements to rounding with a global system of fewer dofs: at p = 5,
+  /// 6 of a triangle's 21 nodes are interior, nearly half of the mesh's dofs. The curve
+  /// stage on issue 16's corpus at p = 5 (fresh processes, medians of 6, without / with):
+  /// circles6_nolayer 102 / 88 ms, circle_voronoi 42 / 33 ms, star4_nolayer_coarse
+  /// 37 / 29 ms; the meshes the same.
+  /// assemble_elasticity (the whole system) never condenses.
+  bool condense = true;
 };
 
 /// A sparse symmetric system K x = b over the 2 #nodes displacement dofs,

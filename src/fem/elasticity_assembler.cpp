@@ -1,5 +1,6 @@
 #include "fem/elasticity_assembler.h"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
@@ -11,6 +12,25 @@
 #include "fem/element_stiffness.h"
 
 namespace homesh {
+
+// Per-thread workspace of the element loop.
+struct ElasticityAssembler::Workspace {
+  Eigen::Matrix2Xd X;
+  ElementGeometry geometry;
+  Eigen::VectorXd lambda, mu, fe;
+  Eigen::Matrix2Xd f;
+  Eigen::Matrix3Xd sigma_t;
+  Eigen::MatrixXd Ke, scratch;
+  std::vector<int> dof, order;
+  // Static condensation: the element's condensed (c) and kept (r) local dofs, the
+  // blocks of Ke, K_cc's factor, and the condensed matrix, load and global dofs.
+  std::vector<int> c, r;
+  Eigen::MatrixXd Kcc, Kcr, S;
+  Eigen::VectorXd fc, fr;
+  Eigen::LLT<Eigen::MatrixXd> llt;
+  std::vector<int> rdof;
+};
+
 namespace {
 
 // The nodes of every 2D element (triangles, then quadrilaterals), CSR.
@@ -89,20 +109,24 @@ std::vector<std::vector<int>> node_neighbours(const ElementNodes& en, const Inci
 }
 
 // Dof 2 node + component. Lower: every diagonal, and (r, c), r > c, for free
-// dofs r, c of nodes sharing an element. Coupling: (r, c), r free, c fixed.
+// dofs r, c of nodes sharing an element. Coupling: (r, c), r free, c fixed. A
+// condensed node's dofs (per node) have their diagonal only and couple with none.
 void dof_patterns(const std::vector<std::vector<int>>& neighbours, const std::vector<char>& fixed,
-                  SparsePattern& lower, SparsePattern& coupling) {
+                  const std::vector<char>& condensed, SparsePattern& lower,
+                  SparsePattern& coupling) {
   const int num_dofs = int(fixed.size());
   std::vector<int> outer(num_dofs + 1, 0), inner, c_outer(num_dofs + 1, 0), c_inner;
   for (int i = 0; i < num_dofs / 2; ++i) {
     for (int comp = 0; comp < 2; ++comp) {
       const int col = 2 * i + comp, other = 2 * i + 1 - comp;
       inner.push_back(col);
-      if (!fixed[col]) {
+      if (condensed[i]) {
+        // The row u = 0 until recovered.
+      } else if (!fixed[col]) {
         if (comp == 0 && !fixed[other]) inner.push_back(other);
         for (int j : neighbours[i])
           for (int rc = 0; rc < 2; ++rc)
-            if (j > i && !fixed[2 * j + rc]) inner.push_back(2 * j + rc);
+            if (j > i && !condensed[j] && !fixed[2 * j + rc]) inner.push_back(2 * j + rc);
       } else {
         bool own = !fixed[other];
         for (int j : neighbours[i]) {
@@ -110,6 +134,7 @@ void dof_patterns(const std::vector<std::vector<int>>& neighbours, const std::ve
             c_inner.push_back(other);
             own = false;
           }
+          if (condensed[j]) continue;
           for (int rc = 0; rc < 2; ++rc)
             if (!fixed[2 * j + rc]) c_inner.push_back(2 * j + rc);
         }
@@ -123,19 +148,8 @@ void dof_patterns(const std::vector<std::vector<int>>& neighbours, const std::ve
   coupling = {std::move(c_outer), std::move(c_inner)};
 }
 
-// Per-thread workspace of the element loop.
-struct Workspace {
-  Eigen::Matrix2Xd X;
-  ElementGeometry geometry;
-  Eigen::VectorXd lambda, mu, fe;
-  Eigen::Matrix2Xd f;
-  Eigen::Matrix3Xd sigma_t;
-  Eigen::MatrixXd Ke, scratch;
-  std::vector<int> dof, order;
-};
-
 // Lame's constants, body force and thermal stress (xx, yy, xy) at the points.
-void evaluate(const ElasticityCoefficients& c, int e, Workspace& w) {
+void evaluate(const ElasticityCoefficients& c, int e, ElasticityAssembler::Workspace& w) {
   const Eigen::Index nq = w.geometry.x.cols();
   w.lambda.resize(nq);
   w.mu.resize(nq);
@@ -191,8 +205,34 @@ ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& 
   used_.assign(num_nodes, 0);
   for (int node : en.node) used_[node] = 1;
   const Incidence inc = node_elements(en, num_nodes);
+  condensed_.assign(num_nodes, 0);
+  if (options.condense)
+    for (int i = 0; i < num_nodes; ++i)
+      if (inc.start[i + 1] - inc.start[i] == 1 && !fixed_[2 * i] && !fixed_[2 * i + 1]) {
+        condensed_[i] = 1;
+        num_condensed_ += 2;
+      }
+  recovery_start_.assign(en.size() + 1, 0);
+  for (int e = 0; e < en.size(); ++e) {
+    int c = 0;
+    for (int k = en.start[e]; k < en.start[e + 1]; ++k) c += condensed_[en.node[k]] ? 2 : 0;
+    const int r = 2 * (en.start[e + 1] - en.start[e]) - c;
+    recovery_start_[e + 1] = recovery_start_[e] + Eigen::Index(c) * (r + 1);
+  }
   colours_ = colour_elements(en, inc);
-  dof_patterns(node_neighbours(en, inc), fixed_, pattern_, coupling_pattern_);
+  dof_patterns(node_neighbours(en, inc), fixed_, condensed_, pattern_, coupling_pattern_);
+}
+
+void ElasticityAssembler::split(int e, std::vector<int>& condensed, std::vector<int>& kept) const {
+  const int kind = e < num_triangles_ ? 0 : 1;
+  const int local = e - (kind == 0 ? 0 : num_triangles_);
+  const Eigen::MatrixXi& nodes = kinds_[kind].nodes;
+  const int n = int(nodes.rows());
+  condensed.clear();
+  kept.clear();
+  for (int comp = 0; comp < 2; ++comp)
+    for (int i = 0; i < n; ++i)
+      (condensed_[nodes(i, local)] ? condensed : kept).push_back(comp * n + i);
 }
 
 void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCoefficients& c,
@@ -204,6 +244,7 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
   pattern_.assign_zero(sys.K);
   coupling_pattern_.assign_zero(sys.coupling);
   sys.load = Eigen::VectorXd::Zero(num_dofs);
+  sys.recovery.resize(recovery_start_.back());
   const int *outer = sys.K.outerIndexPtr(), *inner = sys.K.innerIndexPtr();
   const int *c_outer = sys.coupling.outerIndexPtr(), *c_inner = sys.coupling.innerIndexPtr();
   double* value = sys.K.valuePtr();
@@ -251,29 +292,49 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
           }
           continue;
         }
-        // Ke is exact in its lower triangle: entry (a, b) is read from there.
-        auto ke = [&](int a, int b) { return a >= b ? w.Ke(a, b) : w.Ke(b, a); };
-        std::iota(w.order.begin(), w.order.end(), 0);
-        std::sort(w.order.begin(), w.order.end(),
-                  [&](int a, int b) { return w.dof[a] < w.dof[b]; });
+        // The matrix, load and global dofs scattered: Ke, fe and dof, or those of the
+        // element with its condensed dofs eliminated (exact in their lower triangle).
+        const Eigen::MatrixXd* K = &w.Ke;
+        const Eigen::VectorXd* f = &w.fe;
+        const std::vector<int>* dofs = &w.dof;
+        if (recovery_start_[e + 1] > recovery_start_[e]) {
+          try {
+            condense(e, w, sys.recovery.data() + recovery_start_[e]);
+          } catch (const std::exception& error) {
+#pragma omp critical(homesh_assembly_failure)
+            if (failed_element < 0 || e < failed_element) {
+              failed_element = e;
+              failure = error.what();
+            }
+            continue;
+          }
+          K = &w.S;
+          f = &w.fr;
+          dofs = &w.rdof;
+        }
+        const int m = int(dofs->size());
+        auto ke = [&](int a, int b) { return a >= b ? (*K)(a, b) : (*K)(b, a); };
+        std::iota(w.order.begin(), w.order.begin() + m, 0);
+        std::sort(w.order.begin(), w.order.begin() + m,
+                  [&](int a, int b) { return (*dofs)[a] < (*dofs)[b]; });
         // Each column's rows ascending, merged with the element's sorted dofs.
-        for (int s = 0; s < 2 * n; ++s) {
-          const int b = w.order[s], col = w.dof[b];
+        for (int s = 0; s < m; ++s) {
+          const int b = w.order[s], col = (*dofs)[b];
           if (fixed_[col]) {
-            value[outer[col]] += w.Ke(b, b);  // the diagonal heads its column
+            value[outer[col]] += (*K)(b, b);  // the diagonal heads its column
             int p = c_outer[col];
-            for (int t = 0; t < 2 * n; ++t) {
-              const int a = w.order[t], row = w.dof[a];
+            for (int t = 0; t < m; ++t) {
+              const int a = w.order[t], row = (*dofs)[a];
               if (fixed_[row]) continue;
               while (c_inner[p] != row) ++p;
               c_value[p] += ke(a, b);
             }
             continue;
           }
-          sys.load(col) += w.fe(b);
+          sys.load(col) += (*f)(b);
           int p = outer[col];
-          for (int t = s; t < 2 * n; ++t) {
-            const int a = w.order[t], row = w.dof[a];
+          for (int t = s; t < m; ++t) {
+            const int a = w.order[t], row = (*dofs)[a];
             if (fixed_[row]) continue;
             while (inner[p] != row) ++p;
             value[p] += ke(a, b);
@@ -291,7 +352,7 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
                 ": " + failure);
   for (int j = 0; j < num_dofs; ++j) {
     double& diagonal = value[outer[j]];
-    if (!used_[j / 2] || (fixed_[j] && diagonal == 0.0)) diagonal = 1.0;
+    if (!used_[j / 2] || condensed_[j / 2] || (fixed_[j] && diagonal == 0.0)) diagonal = 1.0;
   }
 }
 
@@ -306,6 +367,71 @@ Eigen::VectorXd ElasticityAssembler::rhs(const EliminatedSystem& sys,
   for (int j = 0; j < num_dofs(); ++j)
     if (fixed_[j]) b(j) = sys.K.valuePtr()[outer[j]] * g(j);
   return b;
+}
+
+void ElasticityAssembler::recover(const EliminatedSystem& sys, Eigen::VectorXd& u) const {
+  if (u.size() != num_dofs())
+    throw Error("assemble_elasticity: " + std::to_string(u.size()) + " displacements for " +
+                std::to_string(num_dofs()) + " dofs");
+  if (num_condensed_ == 0) return;
+  if (sys.recovery.size() != recovery_start_.back())
+    throw Error("assemble_elasticity: recover before assemble");
+  const int num_2d = int(recovery_start_.size()) - 1;
+#pragma omp parallel
+  {
+    std::vector<int> c, r;
+    Eigen::VectorXd ur;
+#pragma omp for schedule(static)
+    for (int e = 0; e < num_2d; ++e) {
+      if (recovery_start_[e + 1] == recovery_start_[e]) continue;
+      split(e, c, r);
+      const int kind = e < num_triangles_ ? 0 : 1;
+      const int local = e - (kind == 0 ? 0 : num_triangles_);
+      const Eigen::MatrixXi& nodes = kinds_[kind].nodes;
+      const int n = int(nodes.rows());
+      auto global = [&](int a) { return 2 * nodes(a % n, local) + a / n; };
+      ur.resize(Eigen::Index(r.size()));
+      for (std::size_t k = 0; k < r.size(); ++k) ur(Eigen::Index(k)) = u(global(r[k]));
+      const double* data = sys.recovery.data() + recovery_start_[e];
+      const Eigen::Index nc = Eigen::Index(c.size()), nr = Eigen::Index(r.size());
+      const Eigen::Map<const Eigen::MatrixXd> Z(data, nc, nr);
+      const Eigen::Map<const Eigen::VectorXd> z(data + nc * nr, nc);
+      const Eigen::VectorXd uc = z - Z * ur;
+      for (Eigen::Index k = 0; k < nc; ++k) u(global(c[std::size_t(k)])) = uc(k);
+    }
+  }
+}
+
+void ElasticityAssembler::condense(int e, Workspace& w, double* recovery) const {
+  split(e, w.c, w.r);
+  const Eigen::Index nc = Eigen::Index(w.c.size()), nr = Eigen::Index(w.r.size());
+  // Ke is exact in its lower triangle: entry (a, b) is read from there.
+  auto ke = [&](int a, int b) { return a >= b ? w.Ke(a, b) : w.Ke(b, a); };
+  w.Kcc.resize(nc, nc);
+  w.Kcr.resize(nc, nr);
+  w.S.resize(nr, nr);
+  w.fc.resize(nc);
+  w.fr.resize(nr);
+  for (Eigen::Index a = 0; a < nc; ++a) {
+    for (Eigen::Index b = 0; b < nc; ++b) w.Kcc(a, b) = ke(w.c[a], w.c[b]);
+    for (Eigen::Index b = 0; b < nr; ++b) w.Kcr(a, b) = ke(w.c[a], w.r[b]);
+    w.fc(a) = w.fe(w.c[a]);
+  }
+  for (Eigen::Index b = 0; b < nr; ++b) {
+    for (Eigen::Index a = b; a < nr; ++a) w.S(a, b) = ke(w.r[a], w.r[b]);
+    w.fr(b) = w.fe(w.r[b]);
+  }
+  w.llt.compute(w.Kcc);
+  if (w.llt.info() != Eigen::Success)
+    throw Error("the stiffness of its interior nodes is not positive definite");
+  Eigen::Map<Eigen::MatrixXd> Z(recovery, nc, nr);
+  Eigen::Map<Eigen::VectorXd> z(recovery + nc * nr, nc);
+  Z = w.llt.solve(w.Kcr);
+  z = w.llt.solve(w.fc);
+  w.S.triangularView<Eigen::Lower>() -= w.Kcr.transpose() * Z;
+  w.fr.noalias() -= w.Kcr.transpose() * z;
+  w.rdof.resize(std::size_t(nr));
+  for (Eigen::Index k = 0; k < nr; ++k) w.rdof[std::size_t(k)] = w.dof[std::size_t(w.r[k])];
 }
 
 }  // namespace homesh

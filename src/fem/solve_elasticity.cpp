@@ -33,6 +33,7 @@ ElasticitySolution ElasticitySolver::finish(const Eigen::VectorXd& b,
                 std::to_string(nodes) + " nodes");
   const Eigen::VectorXd x0 = Eigen::Map<const Eigen::VectorXd>(guess.data(), guess.size());
   LinearSolveResult r = solver_.solve(b, x0);
+  assembler_.recover(system_, r.x);
   ElasticitySolution s;
   s.u = Eigen::Map<const Eigen::Matrix2Xd>(r.x.data(), 2, nodes);
   s.iterations = r.iterations;

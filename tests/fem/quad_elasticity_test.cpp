@@ -278,7 +278,9 @@ TEST_CASE("mixed assembly: the dense sum of the element matrices, and the elimin
   bc.fix(m.quad(8, 1), 1, 0.01);  // one component of a quad's interior node
   LinearSystem reference = sys;
   apply_dirichlet(bc, reference);
-  const ElasticityAssembler assembler(m, bc.dofs);
+  AssemblyOptions whole;  // the matrix compared entry by entry: no condensation
+  whole.condense = false;
+  const ElasticityAssembler assembler(m, bc.dofs, whole);
   EliminatedSystem eliminated;
   assembler.assemble(m.x, c, eliminated);
   const Eigen::MatrixXd lower = Eigen::MatrixXd(reference.K).triangularView<Eigen::Lower>();
@@ -288,4 +290,26 @@ TEST_CASE("mixed assembly: the dense sum of the element matrices, and the elimin
   for (std::size_t k = 0; k < bc.dofs.size(); ++k) g(bc.dofs[k]) = bc.values[k];
   CHECK((assembler.rhs(eliminated, g) - reference.b).cwiseAbs().maxCoeff() <
         1e-13 * reference.b.cwiseAbs().maxCoeff());
+
+  // Condensed: the nodes in one element with neither dof held (the quadrilaterals'
+  // interior nodes but the one held, and edge nodes and corners of the free sides).
+  // The same solution.
+  const ElasticityAssembler condensing(m, bc.dofs);
+  std::vector<int> elements_of(m.num_nodes(), 0);
+  for (int e = 0; e < m.num_elements_2d(); ++e)
+    for (const int node : element_node_indices(m, e)) ++elements_of[node];
+  const std::set<int> held(bc.dofs.begin(), bc.dofs.end());
+  int alone = 0, interior = 0;
+  for (int i = 0; i < m.num_nodes(); ++i)
+    alone += elements_of[i] == 1 && !held.count(2 * i) && !held.count(2 * i + 1);
+  for (int q = 0; q < m.num_quads(); ++q) interior += !held.count(2 * m.quad(8, q) + 1);
+  CHECK(interior == m.num_quads() - 1);
+  CHECK(alone > interior);
+  CHECK(condensing.num_condensed_dofs() == 2 * alone);
+  ElasticityOptions without;
+  without.assembly.condense = false;
+  const Eigen::Matrix2Xd u1 = solve_elasticity(m, c, bc).u;
+  const Eigen::Matrix2Xd u2 = solve_elasticity(m, c, bc, without).u;
+  CHECK(u2.cwiseAbs().maxCoeff() > 0.01);
+  CHECK((u1 - u2).cwiseAbs().maxCoeff() < 1e-10 * u2.cwiseAbs().maxCoeff());
 }
