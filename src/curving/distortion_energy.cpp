@@ -120,17 +120,31 @@ double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab
 
 double distortion_energy_hessian(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
                                  const Eigen::Matrix2d& T, const DistortionEnergyOptions& opt,
-                                 Eigen::Matrix2Xd& gradient, Eigen::MatrixXd& hessian) {
+                                 Eigen::Matrix2Xd& gradient, Eigen::MatrixXd& hessian,
+                                 const std::vector<int>* nodes) {
   // J is indexed by j = 2 col + row (column-major vec): (J00, J10, J01, J11); a 4-vector
   // per point for first derivatives, a 4 by 4 matrix for second.
   using Vec4 = Eigen::Matrix<double, 4, 1>;
   using Mat4 = Eigen::Matrix<double, 4, 4>;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const int q = static_cast<int>(tab.rule.weights.size());
-  const int n = static_cast<int>(X.cols());
   const Eigen::VectorXd& w = tab.rule.weights;
   thread_local PointJacobians pj;
   if (!point_jacobians(X, tab, opt.epsilon, pj)) return kInf;
+  // The basis derivatives of the nodes derived by (all, or `nodes`'s rows).
+  thread_local Eigen::MatrixXd Du_rows, Dv_rows;
+  if (nodes) {
+    const int L = static_cast<int>(nodes->size());
+    Du_rows.resize(L, q);
+    Dv_rows.resize(L, q);
+    for (int k = 0; k < L; ++k) {
+      Du_rows.row(k) = tab.dNdu.row((*nodes)[k]);
+      Dv_rows.row(k) = tab.dNdv.row((*nodes)[k]);
+    }
+  }
+  const Eigen::MatrixXd& Du = nodes ? Du_rows : tab.dNdu;
+  const Eigen::MatrixXd& Dv = nodes ? Dv_rows : tab.dNdv;
+  const int n = static_cast<int>(Du.rows());
   const Eigen::Matrix2Xd &Ju = pj.Ju, &Jv = pj.Jv;
   const std::vector<double>& d = pj.d;
   const double A = pj.A;
@@ -218,28 +232,29 @@ double distortion_energy_hessian(const Eigen::Matrix2Xd& X, const ElementTabulat
     const Mat4 Hi = w(i) * (fJJ[i] / A + PhiA * D2);
     H4.col(i) = Eigen::Map<const Eigen::Matrix<double, 16, 1>>(Hi.data());
   }
-  gradient.noalias() = Gu.lazyProduct(tab.dNdu.transpose());
-  gradient.noalias() += Gv.lazyProduct(tab.dNdv.transpose());
-  Eigen::Matrix2Xd dA = Au.lazyProduct(tab.dNdu.transpose());
-  dA.noalias() += Av.lazyProduct(tab.dNdv.transpose());
-  Eigen::Matrix2Xd dC = Cu.lazyProduct(tab.dNdu.transpose());
-  dC.noalias() += Cv.lazyProduct(tab.dNdv.transpose());
+  gradient.noalias() = Gu.lazyProduct(Du.transpose());
+  gradient.noalias() += Gv.lazyProduct(Dv.transpose());
+  thread_local Eigen::Matrix2Xd dA, dC;
+  dA.noalias() = Au.lazyProduct(Du.transpose());
+  dA.noalias() += Av.lazyProduct(Dv.transpose());
+  dC.noalias() = Cu.lazyProduct(Du.transpose());
+  dC.noalias() += Cv.lazyProduct(Dv.transpose());
   // Block (c1, c2) of the per-point part, n by n:
   //   sum_{a, b in {u, v}} D_a diag(H_i(c1 + 2a, c2 + 2b)) D_b^T = [Y_u Y_v] [D_u D_v]^T,
   //   Y_b = sum_a D_a diag(H(c1 + 2 a, c2 + 2 b)).
-  thread_local Eigen::MatrixXd W, Y;
+  thread_local Eigen::MatrixXd W, Y, B;
   W.resize(n, 2 * q);
-  W.leftCols(q) = tab.dNdu;
-  W.rightCols(q) = tab.dNdv;
+  W.leftCols(q) = Du;
+  W.rightCols(q) = Dv;
   Y.resize(n, 2 * q);
   hessian.resize(2 * n, 2 * n);
-  Eigen::MatrixXd B(n, n);
+  B.resize(n, n);
   for (int c1 = 0; c1 < 2; ++c1)
     for (int c2 = c1; c2 < 2; ++c2) {
       for (int b = 0; b < 2; ++b) {
         const auto hu = H4.row(c1 + 4 * (c2 + 2 * b));      // a = u: row c1, col c2 + 2b
         const auto hv = H4.row(c1 + 2 + 4 * (c2 + 2 * b));  // a = v
-        Y.middleCols(b * q, q) = tab.dNdu * hu.asDiagonal() + tab.dNdv * hv.asDiagonal();
+        Y.middleCols(b * q, q) = Du * hu.asDiagonal() + Dv * hv.asDiagonal();
       }
       if (c1 == c2) {
         // A diagonal block is symmetric: its lower triangle (k >= l) only.

@@ -35,6 +35,7 @@
 // of the Jacobian at the centre of the element's straight, bilinear shape,
 // exact for a parallelogram), the mean |J| being A_e (the square's area is 1).
 #include <Eigen/Core>
+#include <vector>
 
 #include "fem/element_tabulation.h"
 
@@ -73,8 +74,12 @@ double distortion_energy(const Eigen::Matrix2Xd& X, const ElementTabulation& tab
 /// per-point blocks go to X by D_i, the rank-2 coupling by dA/dX and sum_i c_i D_i^T.
 /// What the whole-patch Newton steps (curving/patch_newton.h) assemble: exact, and a
 /// fraction of the cost of differencing the gradient (2 n gradients per element).
+/// With `nodes` (local node indices, none repeated), the gradient (2 by L) and the
+/// Hessian (2 L by 2 L) by those nodes' coordinates only, in that order: the optimiser's
+/// patches hold the nodes on their rim, about a quarter of a patch element's Hessian.
 double distortion_energy_hessian(const Eigen::Matrix2Xd& X, const ElementTabulation& tab,
                                  const Eigen::Matrix2d& T, const DistortionEnergyOptions& opt,
-                                 Eigen::Matrix2Xd& gradient, Eigen::MatrixXd& hessian);
+                                 Eigen::Matrix2Xd& gradient, Eigen::MatrixXd& hessian,
+                                 const std::vector<int>* nodes = nullptr);
 
 }  // namespace homesh

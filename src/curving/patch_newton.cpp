@@ -35,13 +35,16 @@ class PatchNewton {
     first_.assign(nf + 1, 0);
     for (int i = 0; i < nf; ++i) first_[i + 1] = first_[i] + (sliding(i) ? 1 : 2);
     slots_.resize(elements_.size());
+    slot_nodes_.resize(elements_.size());
     for (std::size_t le = 0; le < elements_.size(); ++le) {
       const auto nodes = element_node_indices(m_, elements_[le]);
       for (int k = 0; k < nodes.size(); ++k) {
         const int node = nodes(k);
         const auto it = std::lower_bound(free_.begin(), free_.end(), node);
-        if (it != free_.end() && *it == node)
+        if (it != free_.end() && *it == node) {
           slots_[le].push_back({k, static_cast<int>(it - free_.begin())});
+          slot_nodes_[le].push_back(k);
+        }
       }
     }
     // The Hessian's lower pattern: the dofs of two free slots of one element couple.
@@ -99,7 +102,7 @@ class PatchNewton {
       value[p - inner] += v;
     };
     Eigen::Matrix2Xd G;
-    Eigen::MatrixXd Hx, Hl;
+    Eigen::MatrixXd Hl;
     for (std::size_t le = 0; le < elements_.size(); ++le) {
       const std::vector<Slot>& slots = slots_[le];
       const int L = static_cast<int>(slots.size());
@@ -107,19 +110,16 @@ class PatchNewton {
       Eigen::Matrix2Xd X = gather(le);
       const Eigen::Matrix2d& T = (*p_.targets)[le];
       const ElementTabulation& et = tab(le);
-      distortion_energy_hessian(X, et, T, p_.energy, G, Hx);
-      // The free slots' rows and columns of the element's exact Hessian; a
-      // quadrilateral's projected onto the positive semi-definite matrices (see the header).
-      Hl.resize(2 * L, 2 * L);
-      for (int a = 0; a < L; ++a)
-        for (int b = 0; b < L; ++b)
-          Hl.block<2, 2>(2 * b, 2 * a) = Hx.block<2, 2>(2 * slots[b].k, 2 * slots[a].k);
+      // The element's exact gradient and Hessian by its free slots' nodes; a
+      // quadrilateral's Hessian projected onto the positive semi-definite matrices (see the
+      // header).
+      distortion_energy_hessian(X, et, T, p_.energy, G, Hl, &slot_nodes_[le]);
       if (elements_[le] >= m_.num_triangles()) Hl = positive_part(0.5 * (Hl + Hl.transpose()));
       // To the dofs: a free node's (x, y) as they are, a sliding node's by its tangent
       // (d/du = C'(u) . d/dx).
       for (int a = 0; a < L; ++a) {
         const int fa = slots[a].free, da = first_[fa];
-        const Eigen::Vector2d ga = G.col(slots[a].k);
+        const Eigen::Vector2d ga = G.col(a);
         if (sliding(fa)) {
           g(da) += tangent[fa].dot(ga);
         } else {
@@ -214,6 +214,7 @@ class PatchNewton {
   SlidingNodes& s_;
   std::vector<int> first_;  // dofs of free node i: first_[i] .. first_[i + 1] - 1
   std::vector<std::vector<Slot>> slots_;
+  std::vector<std::vector<int>> slot_nodes_;  // per element: its free slots' k
   Eigen::Matrix2Xd X_, x0_;
   std::vector<double> u0_;
   Eigen::SparseMatrix<double> H_;
