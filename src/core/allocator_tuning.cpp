@@ -1,5 +1,6 @@
 #include "core/allocator_tuning.h"
 
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 
@@ -15,6 +16,8 @@
 
 namespace homesh {
 namespace {
+
+std::atomic<bool> thresholds_set{false};
 
 constexpr int kMmapThreshold = 64 << 20;
 constexpr int kTrimThreshold = 256 << 20;
@@ -55,9 +58,12 @@ const AllocatorTuning& tune_allocator() {
                    mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1;
     if (t.thresholds && env && std::strcmp(env, "huge-pages") == 0) t.huge_pages = advise_heap();
 #endif
+    thresholds_set = t.thresholds;
     return t;
   }();
   return applied;
 }
+
+bool allocator_thresholds_set() { return thresholds_set; }
 
 }  // namespace homesh

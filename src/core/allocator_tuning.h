@@ -46,6 +46,9 @@ struct AllocatorTuning {
 /// Applies the tuning above once (later calls return the first call's outcome).
 const AllocatorTuning& tune_allocator();
 
+/// Whether tune_allocator() has run and set the thresholds (asks, applies nothing).
+bool allocator_thresholds_set();
+
 /// Whether the environment declines homesh's allocator tuning (HOMESH_MALLOC=default):
 /// tune_allocator's and fem/cholmod_memory.h's.
 bool allocator_tuning_declined();

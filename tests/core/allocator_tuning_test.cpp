@@ -44,6 +44,7 @@ TEST_CASE("allocator tuning: applied on glibc unless HOMESH_MALLOC=default", "[c
 #endif
   const homesh::AllocatorTuning& t = homesh::tune_allocator();
   CHECK(t.thresholds == expected);
+  CHECK(homesh::allocator_thresholds_set() == expected);
   CHECK(&homesh::tune_allocator() == &t);  // once: the same answer, nothing redone
 #if defined(__linux__)
   // Kernels built with transparent huge pages take the advice in any mode.

@@ -3,6 +3,8 @@
 // whole 2 MiB pages inside a range, and the kernel keeps it (/proc/self/smaps).
 #include "core/huge_page_allocator.h"
 
+#include <sys/mman.h>
+
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstdlib>
@@ -48,9 +50,12 @@ TEST_CASE("huge pages: vectors aligned by size", "[core]") {
 }
 
 TEST_CASE("huge pages: the advice covers the whole 2 MiB pages inside the range", "[core]") {
-  void* block = std::aligned_alloc(kHuge, 8 * kHuge);
-  REQUIRE(block != nullptr);
-  const auto base = reinterpret_cast<std::uintptr_t>(block);
+  // A fresh mapping, 2 MiB aligned within: heap memory may carry an earlier test's advice.
+  void* mapping =
+      mmap(nullptr, 9 * kHuge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  REQUIRE(mapping != MAP_FAILED);
+  const auto base = (reinterpret_cast<std::uintptr_t>(mapping) + kHuge - 1) & ~(kHuge - 1);
+  void* block = reinterpret_cast<void*>(base);
   // No whole page inside: nothing advised.
   CHECK_FALSE(advise_huge_pages(reinterpret_cast<void*>(base + 4096), kHuge));
   CHECK_FALSE(advise_huge_pages(block, kHuge - 1));
@@ -65,5 +70,5 @@ TEST_CASE("huge pages: the advice covers the whole 2 MiB pages inside the range"
     CHECK_FALSE(advised(base + 4 * kHuge));
   }
 #endif
-  std::free(block);
+  munmap(mapping, 9 * kHuge);
 }
