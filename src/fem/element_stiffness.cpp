@@ -5,24 +5,33 @@ namespace homesh {
 void element_stiffness_lower(const ElementGeometry& g, const Eigen::VectorXd& lambda,
                              const Eigen::VectorXd& mu, Eigen::MatrixXd& K,
                              Eigen::MatrixXd& scratch) {
-  const Eigen::Index n = g.dNdx.rows();
+  const Eigen::Index n = g.dNdx.rows(), nq = g.dNdx.cols();
   K.resize(2 * n, 2 * n);
-  // Each block is G1 diag(w c) G2^T summed over the terms of Eq 4.15, with
-  // scratch = G1 diag(w c); weights w (lambda + 2 mu), w mu, w lambda.
+  // Each block is a sum of G1 diag(w c) G2^T over the terms of Eq 4.15 (weights
+  // w (lambda + 2 mu), w mu, w lambda), two terms at once as one product over 2 #points:
+  // scratch = [G1 diag(w c) G1' diag(w c')], D = [dN/dx dN/dy] or [dN/dy dN/dx]. The
+  // diagonal blocks are symmetric: their lower triangles only.
   auto A = K.topLeftCorner(n, n);
   auto B = K.bottomLeftCorner(n, n);  // B^T: int lambda dNi/dy dNj/dx + mu dNi/dx dNj/dy
   auto C = K.bottomRightCorner(n, n);
-  scratch.noalias() = g.dNdx * (g.weight.cwiseProduct(lambda + 2.0 * mu)).asDiagonal();
-  A.noalias() = scratch * g.dNdx.transpose();
-  scratch.noalias() = g.dNdy * (g.weight.cwiseProduct(mu)).asDiagonal();
-  A.noalias() += scratch * g.dNdy.transpose();
-  scratch.noalias() = g.dNdx * (g.weight.cwiseProduct(mu)).asDiagonal();
-  C.noalias() = scratch * g.dNdx.transpose();
-  B.noalias() = scratch * g.dNdy.transpose();
-  scratch.noalias() = g.dNdy * (g.weight.cwiseProduct(lambda)).asDiagonal();
-  B.noalias() += scratch * g.dNdx.transpose();
-  scratch.noalias() = g.dNdy * (g.weight.cwiseProduct(lambda + 2.0 * mu)).asDiagonal();
-  C.noalias() += scratch * g.dNdy.transpose();
+  thread_local Eigen::MatrixXd D;
+  D.resize(n, 2 * nq);
+  scratch.resize(n, 2 * nq);
+  const Eigen::VectorXd stiff = g.weight.cwiseProduct(lambda + 2.0 * mu);
+  const Eigen::VectorXd shear = g.weight.cwiseProduct(mu);
+  const Eigen::VectorXd lame = g.weight.cwiseProduct(lambda);
+  D.leftCols(nq) = g.dNdx;
+  D.rightCols(nq) = g.dNdy;
+  scratch.leftCols(nq).noalias() = g.dNdx * stiff.asDiagonal();
+  scratch.rightCols(nq).noalias() = g.dNdy * shear.asDiagonal();
+  A.triangularView<Eigen::Lower>() = scratch * D.transpose();
+  scratch.leftCols(nq).noalias() = g.dNdx * shear.asDiagonal();
+  scratch.rightCols(nq).noalias() = g.dNdy * stiff.asDiagonal();
+  C.triangularView<Eigen::Lower>() = scratch * D.transpose();
+  D.leftCols(nq) = g.dNdy;
+  D.rightCols(nq) = g.dNdx;
+  scratch.rightCols(nq).noalias() = g.dNdy * lame.asDiagonal();
+  B.noalias() = scratch * D.transpose();
 }
 
 Eigen::MatrixXd element_stiffness(const ElementGeometry& g, const Eigen::VectorXd& lambda,

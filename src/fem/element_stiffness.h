@@ -18,7 +18,7 @@ Eigen::MatrixXd element_stiffness(const ElementGeometry& g, const Eigen::VectorX
                                   const Eigen::VectorXd& mu);
 
 /// The lower triangle of the same Ke into K (2n by 2n, resized; the strict
-/// upper triangle is left unspecified), with `scratch` (n by #points) as
+/// upper triangle is left unspecified), with `scratch` (n by 2 #points) as
 /// workspace: no allocation once both have their sizes.
 void element_stiffness_lower(const ElementGeometry& g, const Eigen::VectorXd& lambda,
                              const Eigen::VectorXd& mu, Eigen::MatrixXd& K,
