@@ -22,6 +22,9 @@ namespace {
 constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
 constexpr int kMaxHalvings = 20;
 constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
+// Least work (sum over the patches' elements of their node count squared) for the patches
+// to be optimised in parallel (as patch_newton.cpp's kParallelWork for one patch's elements).
+constexpr double kParallelPatchWork = 4000;
 
 // One patch being optimised on the shared coordinates x (its free nodes are its own).
 class PatchOptimiser {
@@ -377,8 +380,24 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
 
   Eigen::Matrix2Xd& x = res.mesh.x;
   std::vector<PatchOutcome> outcome(patches.size());
-  const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
+  // One thread per core (or opt.threads), not OpenMP's default: a Gmsh-API script's
+  // gmsh.initialize sets that to General.NumThreads, 1 unless the user says otherwise, for
+  // the whole process. Several patches: in parallel where their elements' work (sum of n^2)
+  // is worth a team (a fresh process starts its threads: circle_nolayer_coarse p = 2 took
+  // 1.27x with 2 threads for its 3 small patches). One patch: its element loops in parallel
+  // (PatchProblem::threads, gated the same way).
+  const int cores = std::max(1, opt.threads > 0 ? opt.threads : omp_get_num_procs());
+  double work = 0;
+  for (const OptimisationPatch& patch : patches)
+    for (int e : patch.elements) {
+      const double n = double(element_node_indices(m, e).size());
+      work += n * n;
+    }
+  const int threads = patches.size() > 1 && work >= kParallelPatchWork
+                          ? std::min<int>(cores, int(patches.size()))
+                          : 1;
+  const int element_threads = patches.size() == 1 ? cores : 1;
+#pragma omp parallel for schedule(dynamic) num_threads(threads) if (threads > 1)
   for (int k = 0; k < static_cast<int>(patches.size()); ++k) {
     const OptimisationPatch& patch = patches[k];
     double worst = std::numeric_limits<double>::infinity();
@@ -408,6 +427,7 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
       problem.energy = opt.energy;
       problem.bounds = opt.bounds;
       problem.floor = worst;
+      problem.threads = element_threads;
       o.newton =
           patch_newton(problem, x, sliding, opt.newton_iterations, opt.newton_tolerance).iterations;
     }

@@ -110,7 +110,9 @@ struct OptimiseOptions {
   double lattice_weight = 0.2;
   /// Bezier bounds behind every certificate.
   BoundsOptions bounds;
-  /// Threads over patches (0: OpenMP's default).
+  /// Threads (0: one per core, whatever OpenMP's default is): over the patches where there
+  /// are several, over one patch's elements where it is alone (curving/patch_newton.h), each
+  /// only where the work is worth it. The result does not depend on the count.
   int threads = 0;
 };
 
