@@ -22,8 +22,9 @@ namespace {
 constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
 constexpr int kMaxHalvings = 20;
 constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
-// Least work (sum over the patches' elements of their node count squared) for the patches
-// to be optimised in parallel (as patch_newton.cpp's kParallelWork for one patch's elements).
+// Least work (sum over the patches' elements of their node count squared: a p = 5
+// triangle's 441 is about 40 us of Hessian a Newton step) for the patches to be optimised
+// in parallel.
 constexpr double kParallelPatchWork = 4000;
 
 // One patch being optimised on the shared coordinates x (its free nodes are its own).
@@ -382,10 +383,11 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
   std::vector<PatchOutcome> outcome(patches.size());
   // One thread per core (or opt.threads), not OpenMP's default: a Gmsh-API script's
   // gmsh.initialize sets that to General.NumThreads, 1 unless the user says otherwise, for
-  // the whole process. Several patches: in parallel where their elements' work (sum of n^2)
-  // is worth a team (a fresh process starts its threads: circle_nolayer_coarse p = 2 took
-  // 1.27x with 2 threads for its 3 small patches). One patch: its element loops in parallel
-  // (PatchProblem::threads, gated the same way).
+  // the whole process. Over the patches, where their elements' work (sum of n^2) is worth
+  // a team: a fresh process starts its threads (circle_nolayer_coarse p = 2 took 1.27x
+  // with 2 threads for its 3 small patches). One patch's element loops in parallel as well
+  // (energies, Hessians, certificates) gained nothing: plate_holes_nolayer_coarse p = 4
+  // 1.26x as long with them in place of the patches in parallel, a lone patch's the same.
   const int cores = std::max(1, opt.threads > 0 ? opt.threads : omp_get_num_procs());
   double work = 0;
   for (const OptimisationPatch& patch : patches)
@@ -396,7 +398,6 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
   const int threads = patches.size() > 1 && work >= kParallelPatchWork
                           ? std::min<int>(cores, int(patches.size()))
                           : 1;
-  const int element_threads = patches.size() == 1 ? cores : 1;
 #pragma omp parallel for schedule(dynamic) num_threads(threads) if (threads > 1)
   for (int k = 0; k < static_cast<int>(patches.size()); ++k) {
     const OptimisationPatch& patch = patches[k];
@@ -427,7 +428,6 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
       problem.energy = opt.energy;
       problem.bounds = opt.bounds;
       problem.floor = worst;
-      problem.threads = element_threads;
       o.newton =
           patch_newton(problem, x, sliding, opt.newton_iterations, opt.newton_tolerance).iterations;
     }

@@ -110,9 +110,8 @@ struct OptimiseOptions {
   double lattice_weight = 0.2;
   /// Bezier bounds behind every certificate.
   BoundsOptions bounds;
-  /// Threads (0: one per core, whatever OpenMP's default is): over the patches where there
-  /// are several, over one patch's elements where it is alone (curving/patch_newton.h), each
-  /// only where the work is worth it. The result does not depend on the count.
+  /// Threads over the patches (0: one per core, whatever OpenMP's default is), where their
+  /// work is worth it. The result does not depend on the count (patches share no free node).
   int threads = 0;
 };
 

@@ -3,7 +3,6 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCore>
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -20,10 +19,6 @@ constexpr int kMaxHalvings = 12;  // of one step's length
 constexpr int kMaxDampings = 8;   // raises of lambda (x 10) before giving up
 constexpr double kFirstDamping = 1e-4;
 constexpr double kLeastDamping = 1e-8;  // below this after accepted steps: pure Newton
-// Least work (sum over the patch's elements of their node count squared) for the element
-// loops to take PatchProblem::threads: a p = 5 element's Hessian is 441 units, about 40
-// us; below some 0.3 ms a step, a team's start and barriers cost more than they share.
-constexpr double kParallelWork = 4000;
 
 // The symmetric matrix H with its negative eigenvalues set to 0.
 Eigen::MatrixXd positive_part(const Eigen::MatrixXd& H) {
@@ -70,14 +65,6 @@ class PatchNewton {
       pattern.outer[j + 1] = static_cast<int>(pattern.inner.size());
     }
     pattern.assign_zero(H_);
-    // Threads only where the elements' work is worth a team: sum of n^2 over them.
-    double work = 0;
-    for (std::size_t le = 0; le < elements_.size(); ++le)
-      if (!slots_[le].empty()) {
-        const double nodes = double(element_node_indices(m_, elements_[le]).size());
-        work += nodes * nodes;
-      }
-    threads_ = work >= kParallelWork ? std::max(1, p.threads) : 1;
   }
 
   // The lower triangle of the Hessian (its pattern fixed; each column starts at its
@@ -86,30 +73,14 @@ class PatchNewton {
 
   int dofs() const { return first_.back(); }
 
-  // Summed energy of the elements with a free node (+infinity if any is inverted). With
-  // threads, the elements' energies are computed in parallel and summed in order: the
-  // same sum as one thread's.
+  // Summed energy of the elements with a free node (+infinity if any is inverted).
   double energy() {
-    const int n = static_cast<int>(elements_.size());
-    if (threads_ == 1) {
-      double E = 0;
-      for (int le = 0; le < n; ++le) {
-        if (slots_[le].empty()) continue;
-        E += distortion_energy(gather(le, X_), tab(le), (*p_.targets)[le], p_.energy);
-        if (!std::isfinite(E)) return E;
-      }
-      return E;
-    }
-    element_energy_.resize(n);
-#pragma omp parallel for schedule(static) num_threads(threads_)
-    for (int le = 0; le < n; ++le) {
-      thread_local Eigen::Matrix2Xd X;
-      element_energy_[le] = slots_[le].empty() ? 0.0
-                                               : distortion_energy(gather(le, X), tab(le),
-                                                                   (*p_.targets)[le], p_.energy);
-    }
     double E = 0;
-    for (int le = 0; le < n; ++le) E += element_energy_[le];
+    for (std::size_t le = 0; le < elements_.size(); ++le) {
+      if (slots_[le].empty()) continue;
+      E += distortion_energy(gather(le), tab(le), (*p_.targets)[le], p_.energy);
+      if (!std::isfinite(E)) return E;
+    }
     return E;
   }
 
@@ -130,33 +101,20 @@ class PatchNewton {
       const int* p = std::lower_bound(inner + outer[col], inner + outer[col + 1], row);
       value[p - inner] += v;
     };
-    // The element's exact gradient and Hessian by its free slots' nodes; a
-    // quadrilateral's Hessian projected onto the positive semi-definite matrices (see the
-    // header).
-    auto element = [&](int le, Eigen::Matrix2Xd& X, Eigen::Matrix2Xd& G, Eigen::MatrixXd& H) {
-      distortion_energy_hessian(gather(le, X), tab(le), (*p_.targets)[le], p_.energy, G, H,
-                                &slot_nodes_[le]);
-      if (elements_[le] >= m_.num_triangles()) H = positive_part(0.5 * (H + H.transpose()));
-    };
-    const int n = static_cast<int>(elements_.size());
-    if (threads_ > 1) {  // computed in parallel, added in order below: one thread's sums
-      element_gradient_.resize(n);
-      element_hessian_.resize(n);
-#pragma omp parallel for schedule(dynamic, 4) num_threads(threads_)
-      for (int le = 0; le < n; ++le) {
-        thread_local Eigen::Matrix2Xd X;
-        if (!slots_[le].empty()) element(le, X, element_gradient_[le], element_hessian_[le]);
-      }
-    }
-    Eigen::Matrix2Xd G_one;
-    Eigen::MatrixXd H_one;
-    for (int le = 0; le < n; ++le) {
+    Eigen::Matrix2Xd G;
+    Eigen::MatrixXd Hl;
+    for (std::size_t le = 0; le < elements_.size(); ++le) {
       const std::vector<Slot>& slots = slots_[le];
       const int L = static_cast<int>(slots.size());
       if (L == 0) continue;
-      if (threads_ == 1) element(le, X_, G_one, H_one);
-      const Eigen::Matrix2Xd& G = threads_ > 1 ? element_gradient_[le] : G_one;
-      const Eigen::MatrixXd& Hl = threads_ > 1 ? element_hessian_[le] : H_one;
+      Eigen::Matrix2Xd X = gather(le);
+      const Eigen::Matrix2d& T = (*p_.targets)[le];
+      const ElementTabulation& et = tab(le);
+      // The element's exact gradient and Hessian by its free slots' nodes; a
+      // quadrilateral's Hessian projected onto the positive semi-definite matrices (see the
+      // header).
+      distortion_energy_hessian(X, et, T, p_.energy, G, Hl, &slot_nodes_[le]);
+      if (elements_[le] >= m_.num_triangles()) Hl = positive_part(0.5 * (Hl + Hl.transpose()));
       // To the dofs: a free node's (x, y) as they are, a sliding node's by its tangent
       // (d/du = C'(u) . d/dx).
       for (int a = 0; a < L; ++a) {
@@ -192,23 +150,12 @@ class PatchNewton {
 
   // Every element with a free node certified valid with minJ/maxJ >= floor.
   bool certified() {
-    auto good = [&](int le, Eigen::Matrix2Xd& X) {
-      const JacobianBounds b = element_jacobian_bounds(m_, elements_[le], gather(le, X), p_.bounds);
-      return b.valid_certified && scaled_jacobian_ratio(b) >= p_.floor;
-    };
-    const int n = static_cast<int>(elements_.size());
-    if (threads_ == 1) {
-      for (int le = 0; le < n; ++le)
-        if (!slots_[le].empty() && !good(le, X_)) return false;
-      return true;
+    for (std::size_t le = 0; le < elements_.size(); ++le) {
+      if (slots_[le].empty()) continue;
+      const JacobianBounds b = element_jacobian_bounds(m_, elements_[le], gather(le), p_.bounds);
+      if (!b.valid_certified || scaled_jacobian_ratio(b) < p_.floor) return false;
     }
-    std::atomic<bool> all{true};
-#pragma omp parallel for schedule(dynamic, 4) num_threads(threads_)
-    for (int le = 0; le < n; ++le) {
-      thread_local Eigen::Matrix2Xd X;
-      if (all.load(std::memory_order_relaxed) && !slots_[le].empty() && !good(le, X)) all = false;
-    }
-    return all;
+    return true;
   }
 
   // Saves the free nodes (positions, parameters) as the base of move().
@@ -248,12 +195,11 @@ class PatchNewton {
 
   bool sliding(int i) const { return s_.slides(free_[i]); }
 
-  // Element le's nodes into X.
-  const Eigen::Matrix2Xd& gather(std::size_t le, Eigen::Matrix2Xd& X) const {
+  const Eigen::Matrix2Xd& gather(std::size_t le) {
     const auto nodes = element_node_indices(m_, elements_[le]);
-    X.resize(2, nodes.size());
-    for (int k = 0; k < nodes.size(); ++k) X.col(k) = x_.col(nodes(k));
-    return X;
+    X_.resize(2, nodes.size());
+    for (int k = 0; k < nodes.size(); ++k) X_.col(k) = x_.col(nodes(k));
+    return X_;
   }
 
   const ElementTabulation& tab(std::size_t le) const {
@@ -272,10 +218,6 @@ class PatchNewton {
   Eigen::Matrix2Xd X_, x0_;
   std::vector<double> u0_;
   Eigen::SparseMatrix<double> H_;
-  int threads_ = 1;  // for the element loops
-  std::vector<double> element_energy_;
-  std::vector<Eigen::Matrix2Xd> element_gradient_;
-  std::vector<Eigen::MatrixXd> element_hessian_;
 };
 
 }  // namespace

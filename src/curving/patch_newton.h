@@ -96,10 +96,6 @@ struct PatchProblem {
   BoundsOptions bounds;
   /// No accepted step takes an element below this certified minJ/maxJ.
   double floor = 0;
-  /// Threads for the patch's element loops (energies, Hessians, certificates), where its
-  /// elements' work is worth it; the result is the same for any count (per-element
-  /// values, summed in order).
-  int threads = 1;
 };
 
 struct PatchNewtonResult {
