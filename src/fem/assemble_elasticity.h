@@ -29,6 +29,11 @@ struct AssemblyOptions {
   /// 37 / 29 ms; the meshes the same.
   /// assemble_elasticity (the whole system) never condenses.
   bool condense = true;
+  /// Threads of the repeated assembly's element loops (0: one per core, whatever
+  /// OpenMP's default is: a Gmsh-API script's gmsh.initialize sets that to 1), used only
+  /// where the elements' work is worth a team (ElasticityAssembler). The system is the
+  /// same for any count (the elements of one colour share no entry).
+  int threads = 0;
 };
 
 /// A sparse symmetric system K x = b over the 2 #nodes displacement dofs,

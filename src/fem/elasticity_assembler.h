@@ -90,6 +90,7 @@ class ElasticityAssembler {
   std::vector<char> used_;       // per node: in some triangle or quadrilateral
   std::vector<char> condensed_;  // per node: its dofs condensed (in one element, both free)
   int num_condensed_ = 0;
+  int threads_ = 1;  // of the element loops (AssemblyOptions::threads, where worth it)
   // Per 2D element, the start of its Z and z in EliminatedSystem::recovery (#2D + 1).
   std::vector<Eigen::Index> recovery_start_;
   std::vector<std::vector<int>> colours_;
