@@ -10,6 +10,15 @@
 // tables from a helper thread (madvise MADV_POPULATE_WRITE, Linux 5.14: no byte of it
 // written, so the allocations the caller makes there meanwhile are safe), while the
 // caller goes on; what the caller reaches before the helper does, it faults in itself.
+// The range's whole 2 MiB pages are advised for transparent huge pages first
+// (core/huge_page_allocator.h; the advice stays on that part of the heap): the helper
+// zeroes them, so the caller never waits on a fresh 2 MiB page, the cause of the 2-3x runs
+// that ended HOMESH_MALLOC=huge-pages as the default (allocator_tuning.h). 18 curve runs of
+// issue 16's corpus at p = 3-5, alternated fresh processes, medians of 2, against the 4 KiB
+// pages: median 0.84x (circle_voronoi p = 5 0.75x, naca4412_a8_nolayer_fine p = 5 0.69x,
+// flap_gap02_bl_1e-4 p = 3 1.01x), the slowest single run 1.07x the 4 KiB median; 12 small
+// runs (p = 2-5, 543-3419 triangles) median 1.00x. The whole heap in huge pages
+// (HOMESH_MALLOC=huge-pages) did as well there (0.82x), but for every stage and run size.
 // The destructor stops the helper (within one 128 KiB chunk) and joins it.
 //
 // A no-op (active() false) where it cannot help or cannot be safe: without glibc's

@@ -50,7 +50,9 @@ TEST_CASE("allocator tuning: applied on glibc unless HOMESH_MALLOC=default", "[c
   // Kernels built with transparent huge pages take the advice in any mode.
   const bool thp = std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good();
   CHECK(t.huge_pages == (expected && thp && huge));
-  CHECK(heap_advised() == t.huge_pages);
+  // Advised where the tuning says so. (Not the converse: core/heap_prefault.h advises the
+  // ranges it populates, and a test of it may have run first in this process.)
+  if (t.huge_pages) CHECK(heap_advised());
 #else
   CHECK(!t.huge_pages);
   (void)huge;

@@ -11,6 +11,7 @@
 
 #include "core/allocator_tuning.h"
 #include "core/sanitizers.h"
+#include "huge_page_advice.h"
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -33,6 +34,11 @@ TEST_CASE("heap prefault: the grown heap resident, the data written meanwhile in
   const long page = sysconf(_SC_PAGESIZE);
   CHECK(prefault.bytes() + 2 * std::size_t(page) >= kBytes);
   CHECK(prefault.first() % std::uintptr_t(page) == 0);
+  // Its whole 2 MiB pages advised for transparent huge pages, where the kernel has them.
+  constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
+  const std::uintptr_t huge_first = (prefault.first() + kHuge - 1) & ~(kHuge - 1);
+  CHECK(homesh::core_test::advised(huge_first) == homesh::core_test::thp_kernel());
+  CHECK(homesh::core_test::advised(huge_first + kHuge) == homesh::core_test::thp_kernel());
   // A block allocated and filled while the helper runs, where the freed range was (glibc
   // gives the freed chunk back), not one byte of it changed by the population.
   constexpr std::size_t kBlock = kBytes - (std::size_t(1) << 20);

@@ -12,31 +12,14 @@
 #include <sstream>
 #include <string>
 
+#include "huge_page_advice.h"
+
 using namespace homesh;
+using namespace homesh::core_test;
 
 namespace {
 
 constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
-
-// Whether the mapping holding address a carries the huge-page advice ("hg").
-bool advised(std::uintptr_t a) {
-  std::ifstream smaps("/proc/self/smaps");
-  std::string line;
-  bool in = false;
-  while (std::getline(smaps, line)) {
-    std::uintptr_t lo = 0, hi = 0;
-    char dash = 0;
-    std::istringstream head(line);
-    if (head >> std::hex >> lo >> dash >> hi && dash == '-') {
-      in = lo <= a && a < hi;
-      continue;
-    }
-    if (in && line.rfind("VmFlags:", 0) == 0) return line.find(" hg") != std::string::npos;
-  }
-  return false;
-}
-
-bool thp_kernel() { return std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good(); }
 
 }  // namespace
 
