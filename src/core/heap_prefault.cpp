@@ -1,5 +1,6 @@
 #include "core/heap_prefault.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 
@@ -29,18 +30,16 @@ HeapPrefault::HeapPrefault(std::size_t bytes) {
   if (bytes < kLeast || !allocator_thresholds_set() || std::thread::hardware_concurrency() < 2)
     return;
   // The heap grown by `bytes` (not touched: malloc writes a chunk header, free another).
-  const auto before = reinterpret_cast<std::uintptr_t>(sbrk(0));
   void* volatile block = std::malloc(bytes);  // volatile: not elided
   if (!block) return;
   const auto start = reinterpret_cast<std::uintptr_t>(block);
   std::free(block);
-  const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
+  const auto brk = reinterpret_cast<std::uintptr_t>(sbrk(0));
   // Only a range of the main heap, which keeps it (glibc's brk heap, kept by the trim
   // threshold; fresh where the break moved, else a free chunk, perhaps resident already,
   // which costs the helper little), never memory mapped elsewhere (mmap'd chunks and
   // other allocators' arenas lie above the break).
-  (void)before;
-  if (!(start + bytes <= after)) return;
+  if (!(start + bytes <= brk)) return;
   const std::uintptr_t page = std::uintptr_t(sysconf(_SC_PAGESIZE));
   const std::uintptr_t a = (start + page - 1) & ~(page - 1), b = (start + bytes) & ~(page - 1);
   if (b <= a) return;

@@ -22,7 +22,7 @@
 // The destructor stops the helper (within one 128 KiB chunk) and joins it.
 //
 // A no-op (active() false) where it cannot help or cannot be safe: without glibc's
-// heap (a sanitizer's or valgrind's allocator: the heap did not grow), without
+// heap (a sanitizer's or valgrind's allocator: the block is not below the break), without
 // MADV_POPULATE_WRITE (older kernels: the first madvise fails and the helper stops),
 // where allocator_tuning.h's thresholds are not in place (tune_allocator() not called,
 // as the CLI and the Python module do at start, or declined: the heap would be trimmed),
