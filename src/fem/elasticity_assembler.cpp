@@ -262,12 +262,15 @@ ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& 
     recovery_start_[e + 1] = recovery_start_[e] + Eigen::Index(c) * (r + 1);
   }
   // Threads where the elements' work (sum of n^2: a p = 5 triangle's 441 takes some 15 us
-  // to assemble) is worth starting a team in a fresh process: 60000, some 2 ms (20000 made
-  // circles6_nolayer p = 2 1.06x as long).
+  // to assemble) is worth starting a team in a fresh process: 20000, some 0.7 ms. On
+  // circles6_nolayer p = 2 (its polish solve just above it) two alternated A/B runs gave
+  // 1.06x and 0.96x: the break-even, within the scatter.
+  constexpr double kParallelWork = 20000;
   double work = 0;
   for (int e = 0; e < en.size(); ++e) work += std::pow(double(en.start[e + 1] - en.start[e]), 2);
-  threads_ =
-      work >= 20000 ? std::max(1, options.threads > 0 ? options.threads : omp_get_num_procs()) : 1;
+  threads_ = work >= kParallelWork
+                 ? std::max(1, options.threads > 0 ? options.threads : omp_get_num_procs())
+                 : 1;
   colours_ = colour_elements(en, inc);
   dof_patterns(node_neighbours(en, inc), fixed_, condensed_, pattern_, coupling_pattern_);
 }
