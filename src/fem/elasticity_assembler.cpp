@@ -325,6 +325,7 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
         const ElementTabulation& tab = kinds_[kind].tab;
         Workspace& w = works[kind];
         const int n = int(nodes.rows());
+        const bool condensing = recovery_start_[e + 1] > recovery_start_[e];
         try {
           for (int i = 0; i < n; ++i) {
             w.X.col(i) = x.col(nodes(i, local));
@@ -336,6 +337,7 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
           evaluate(c, e, w);
           element_stiffness_lower(w.geometry, w.lambda, w.mu, w.Ke, w.scratch);
           element_load(w.geometry, tab.N, w.f, w.sigma_t, w.fe);
+          if (condensing) condense(e, w, sys.recovery.data() + recovery_start_[e]);
         } catch (const std::exception& error) {
 #pragma omp critical(homesh_assembly_failure)
           if (failed_element < 0 || e < failed_element) {
@@ -346,24 +348,9 @@ void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCo
         }
         // The matrix, load and global dofs scattered: Ke, fe and dof, or those of the
         // element with its condensed dofs eliminated (exact in their lower triangle).
-        const Eigen::MatrixXd* K = &w.Ke;
-        const Eigen::VectorXd* f = &w.fe;
-        const std::vector<int>* dofs = &w.dof;
-        if (recovery_start_[e + 1] > recovery_start_[e]) {
-          try {
-            condense(e, w, sys.recovery.data() + recovery_start_[e]);
-          } catch (const std::exception& error) {
-#pragma omp critical(homesh_assembly_failure)
-            if (failed_element < 0 || e < failed_element) {
-              failed_element = e;
-              failure = error.what();
-            }
-            continue;
-          }
-          K = &w.S;
-          f = &w.fr;
-          dofs = &w.rdof;
-        }
+        const Eigen::MatrixXd* K = condensing ? &w.S : &w.Ke;
+        const Eigen::VectorXd* f = condensing ? &w.fr : &w.fe;
+        const std::vector<int>* dofs = condensing ? &w.rdof : &w.dof;
         const int m = int(dofs->size());
         auto ke = [&](int a, int b) { return a >= b ? (*K)(a, b) : (*K)(b, a); };
         std::iota(w.order.begin(), w.order.begin() + m, 0);
