@@ -34,7 +34,7 @@ class PatchNewton {
     const int nf = static_cast<int>(free_.size());
     first_.assign(nf + 1, 0);
     for (int i = 0; i < nf; ++i) first_[i + 1] = first_[i] + (sliding(i) ? 1 : 2);
-    slots_.resize(elements_.size());
+    slot_free_.resize(elements_.size());
     slot_nodes_.resize(elements_.size());
     for (std::size_t le = 0; le < elements_.size(); ++le) {
       const auto nodes = element_node_indices(m_, elements_[le]);
@@ -42,19 +42,19 @@ class PatchNewton {
         const int node = nodes(k);
         const auto it = std::lower_bound(free_.begin(), free_.end(), node);
         if (it != free_.end() && *it == node) {
-          slots_[le].push_back({k, static_cast<int>(it - free_.begin())});
           slot_nodes_[le].push_back(k);
+          slot_free_[le].push_back(static_cast<int>(it - free_.begin()));
         }
       }
     }
     // The Hessian's lower pattern: the dofs of two free slots of one element couple.
     const int n = dofs();
     std::vector<std::vector<int>> rows(n);
-    for (const std::vector<Slot>& slots : slots_)
-      for (const Slot& a : slots)
-        for (const Slot& b : slots)
-          for (int i = first_[b.free]; i < first_[b.free + 1]; ++i)
-            for (int j = first_[a.free]; j < first_[a.free + 1]; ++j)
+    for (const std::vector<int>& slots : slot_free_)
+      for (const int a : slots)
+        for (const int b : slots)
+          for (int i = first_[b]; i < first_[b + 1]; ++i)
+            for (int j = first_[a]; j < first_[a + 1]; ++j)
               if (i >= j) rows[j].push_back(i);
     SparsePattern pattern;
     pattern.outer.assign(n + 1, 0);
@@ -77,7 +77,7 @@ class PatchNewton {
   double energy() {
     double E = 0;
     for (std::size_t le = 0; le < elements_.size(); ++le) {
-      if (slots_[le].empty()) continue;
+      if (slot_free_[le].empty()) continue;
       E += distortion_energy(gather(le), tab(le), (*p_.targets)[le], p_.energy);
       if (!std::isfinite(E)) return E;
     }
@@ -104,7 +104,7 @@ class PatchNewton {
     Eigen::Matrix2Xd G;
     Eigen::MatrixXd Hl;
     for (std::size_t le = 0; le < elements_.size(); ++le) {
-      const std::vector<Slot>& slots = slots_[le];
+      const std::vector<int>& slots = slot_free_[le];
       const int L = static_cast<int>(slots.size());
       if (L == 0) continue;
       Eigen::Matrix2Xd X = gather(le);
@@ -118,7 +118,7 @@ class PatchNewton {
       // To the dofs: a free node's (x, y) as they are, a sliding node's by its tangent
       // (d/du = C'(u) . d/dx).
       for (int a = 0; a < L; ++a) {
-        const int fa = slots[a].free, da = first_[fa];
+        const int fa = slots[a], da = first_[fa];
         const Eigen::Vector2d ga = G.col(a);
         if (sliding(fa)) {
           g(da) += tangent[fa].dot(ga);
@@ -127,7 +127,7 @@ class PatchNewton {
           g(da + 1) += ga(1);
         }
         for (int b = 0; b < L; ++b) {
-          const int fb = slots[b].free, db = first_[fb];
+          const int fb = slots[b], db = first_[fb];
           const Eigen::Matrix2d h = Hl.block<2, 2>(2 * b, 2 * a);  // rows b, columns a
           if (sliding(fa) && sliding(fb)) {
             add(db, da, tangent[fb].dot(h * tangent[fa]));
@@ -151,7 +151,7 @@ class PatchNewton {
   // Every element with a free node certified valid with minJ/maxJ >= floor.
   bool certified() {
     for (std::size_t le = 0; le < elements_.size(); ++le) {
-      if (slots_[le].empty()) continue;
+      if (slot_free_[le].empty()) continue;
       const JacobianBounds b = element_jacobian_bounds(m_, elements_[le], gather(le), p_.bounds);
       if (!b.valid_certified || scaled_jacobian_ratio(b) < p_.floor) return false;
     }
@@ -188,11 +188,6 @@ class PatchNewton {
   }
 
  private:
-  struct Slot {
-    int k;     // node slot in the element
-    int free;  // index into free_
-  };
-
   bool sliding(int i) const { return s_.slides(free_[i]); }
 
   const Eigen::Matrix2Xd& gather(std::size_t le) {
@@ -213,8 +208,8 @@ class PatchNewton {
   Eigen::Matrix2Xd& x_;
   SlidingNodes& s_;
   std::vector<int> first_;  // dofs of free node i: first_[i] .. first_[i + 1] - 1
-  std::vector<std::vector<Slot>> slots_;
-  std::vector<std::vector<int>> slot_nodes_;  // per element: its free slots' k
+  // Per element, its free slots: their place in the element's nodes, and in free_.
+  std::vector<std::vector<int>> slot_nodes_, slot_free_;
   Eigen::Matrix2Xd X_, x0_;
   std::vector<double> u0_;
   Eigen::SparseMatrix<double> H_;
