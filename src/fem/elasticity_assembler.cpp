@@ -275,16 +275,17 @@ ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& 
   dof_patterns(node_neighbours(en, inc), fixed_, condensed_, pattern_, coupling_pattern_);
 }
 
+Eigen::MatrixXi::ConstColXpr ElasticityAssembler::element_nodes(int e) const {
+  return e < num_triangles_ ? kinds_[0].nodes.col(e) : kinds_[1].nodes.col(e - num_triangles_);
+}
+
 void ElasticityAssembler::split(int e, std::vector<int>& condensed, std::vector<int>& kept) const {
-  const int kind = e < num_triangles_ ? 0 : 1;
-  const int local = e - (kind == 0 ? 0 : num_triangles_);
-  const Eigen::MatrixXi& nodes = kinds_[kind].nodes;
-  const int n = int(nodes.rows());
+  const auto nodes = element_nodes(e);
+  const int n = int(nodes.size());
   condensed.clear();
   kept.clear();
   for (int comp = 0; comp < 2; ++comp)
-    for (int i = 0; i < n; ++i)
-      (condensed_[nodes(i, local)] ? condensed : kept).push_back(comp * n + i);
+    for (int i = 0; i < n; ++i) (condensed_[nodes(i)] ? condensed : kept).push_back(comp * n + i);
 }
 
 void ElasticityAssembler::assemble(const Eigen::Matrix2Xd& x, const ElasticityCoefficients& c,
@@ -424,11 +425,10 @@ void ElasticityAssembler::recover(const EliminatedSystem& sys, Eigen::VectorXd& 
     for (int e = 0; e < num_2d; ++e) {
       if (recovery_start_[e + 1] == recovery_start_[e]) continue;
       split(e, c, r);
-      const int kind = e < num_triangles_ ? 0 : 1;
-      const int local = e - (kind == 0 ? 0 : num_triangles_);
-      const Eigen::MatrixXi& nodes = kinds_[kind].nodes;
-      const int n = int(nodes.rows());
-      auto global = [&](int a) { return 2 * nodes(a % n, local) + a / n; };
+      const auto nodes = element_nodes(e);
+      const int n = int(nodes.size());
+      // Element dof (c, i) at c n + i (Eq 4.14) is global dof 2 node + c.
+      auto global = [&](int a) { return 2 * nodes(a % n) + a / n; };
       ur.resize(Eigen::Index(r.size()));
       for (std::size_t k = 0; k < r.size(); ++k) ur(Eigen::Index(k)) = u(global(r[k]));
       const double* data = sys.recovery.data() + recovery_start_[e];

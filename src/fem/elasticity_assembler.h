@@ -94,6 +94,8 @@ class ElasticityAssembler {
   // Per 2D element, the start of its Z and z in EliminatedSystem::recovery (#2D + 1).
   std::vector<Eigen::Index> recovery_start_;
   std::vector<std::vector<int>> colours_;
+  // 2D element e's nodes (a triangle's, or quadrilateral e - #triangles').
+  Eigen::MatrixXi::ConstColXpr element_nodes(int e) const;
   // The element's local dofs (c n + i: component c of its node i) condensed and kept.
   void split(int e, std::vector<int>& condensed, std::vector<int>& kept) const;
   // Element e's Ke and fe in w with its condensed dofs eliminated: w.S (lower), w.fr and
