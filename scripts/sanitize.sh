@@ -45,13 +45,22 @@ if [ "$failed" != 0 ]; then
   exit 1
 fi
 
+# A finding's input goes to $build/fuzz-artifacts/, not into the checkout.
+artifacts="$build/fuzz-artifacts"
+rm -rf "$artifacts" && mkdir -p "$artifacts"
 for fuzzer in "$build"/fuzz_*; do
   name=$(basename "$fuzzer")
   corpus="$root/tests/fuzz/corpus/${name#fuzz_}"
   work=$(mktemp -d)
   cp -r "$corpus"/. "$work"/ 2>/dev/null || true
   echo "fuzzing $name for ${seconds}s"
-  "$fuzzer" -max_total_time="$seconds" -rss_limit_mb=8192 -print_final_stats=1 "$work" 2>&1 | tail -3
+  if ! "$fuzzer" -max_total_time="$seconds" -rss_limit_mb=8192 -print_final_stats=1 \
+    -artifact_prefix="$artifacts/" "$work" >"$build/$name.log" 2>&1; then
+    tail -60 "$build/$name.log"
+    echo "sanitizers: $name found an input that fails (in $artifacts; log: $build/$name.log)"
+    exit 1
+  fi
+  tail -3 "$build/$name.log"
   rm -rf "$work"
 done
 echo "sanitizers and fuzzers: no findings"

@@ -16,6 +16,10 @@
 #include "core/error.h"
 #include "core/sanitizers.h"
 
+#if defined(HOMESH_ASAN)
+#include <sanitizer/common_interface_defs.h>
+#endif
+
 namespace homesh::gmsh_adapter {
 namespace {
 
@@ -28,6 +32,11 @@ constexpr std::size_t kMaxReason = 4000;  // below a pipe's buffer: the report n
   // A crash here must reach the parent as a signal, not through a handler the
   // process installed (libFuzzer's writes a crash file and exits with a code).
   for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
+#if defined(HOMESH_ASAN)
+  // Nor through a sanitizer's death callback: libFuzzer's writes the parent's
+  // input as a crash-* file when ASan refuses Gmsh a corrupt count's allocation.
+  __sanitizer_set_death_callback(nullptr);
+#endif
   std::signal(SIGPIPE, SIG_DFL);  // a parent gone or done: end quietly
   const int null = open("/dev/null", O_WRONLY);
   if (null >= 0) {  // the parent reports; Gmsh's messages would come twice
