@@ -170,13 +170,13 @@ AssemblyTabulations assembly_tabulations(const Mesh& m, const FormulationParams&
 // The reference->physical Jacobian J of every 2D element of m at every point
 // of its rule, element-major: point k of element e at start[e] + k
 // (e * #points on a triangle mesh).
-struct PointJacobians {
+struct QuadratureJacobians {
   std::vector<Eigen::Matrix2d> J;
   std::vector<std::size_t> start;  // #2D elements + 1
 };
 
-PointJacobians quadrature_jacobians(const Mesh& m, const AssemblyTabulations& tabs) {
-  PointJacobians out;
+QuadratureJacobians quadrature_jacobians(const Mesh& m, const AssemblyTabulations& tabs) {
+  QuadratureJacobians out;
   out.start.push_back(0);
   auto add = [&](const Eigen::Matrix2Xd& X, const ElementTabulation& tab) {
     for (Eigen::Index k = 0; k < tab.rule.points.cols(); ++k) {
@@ -196,7 +196,8 @@ ElasticityCoefficients metric(const Mesh& m, const Mesh& initial, const Formulat
                               bool ideal) {
   ElasticityCoefficients c = base(p);
   const AssemblyTabulations tabs = assembly_tabulations(m, p);
-  const PointJacobians J = quadrature_jacobians(m, tabs), J0 = quadrature_jacobians(initial, tabs);
+  const QuadratureJacobians J = quadrature_jacobians(m, tabs),
+                            J0 = quadrature_jacobians(initial, tabs);
   // Ideal->physical: W = J inv(J_ri) on a triangle (quality/ideal_jacobian.h);
   // W = J on a quadrilateral, whose ideal element is the unit square.
   const Eigen::Matrix2d map = ideal ? Eigen::Matrix2d(reference_to_ideal_jacobian().inverse())
@@ -268,7 +269,8 @@ ElasticityCoefficients stiff_shape(const Mesh& m, const Mesh& initial, const For
 ElasticityCoefficients stiff_shear(const Mesh& m, const Mesh& initial, const FormulationParams& p) {
   ElasticityCoefficients c = base(p);
   const AssemblyTabulations tabs = assembly_tabulations(m, p);
-  const PointJacobians J = quadrature_jacobians(m, tabs), J0 = quadrature_jacobians(initial, tabs);
+  const QuadratureJacobians J = quadrature_jacobians(m, tabs),
+                            J0 = quadrature_jacobians(initial, tabs);
   const Eigen::VectorXd ratio = distortion_2d(m).q17_ratio;
   const Lame lame0 = lame_plane_strain(1.0, p.poisson);
   const double lambda = lame0.lambda;

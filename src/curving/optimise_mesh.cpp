@@ -19,8 +19,8 @@
 namespace homesh {
 namespace {
 
-constexpr double kArmijo = 1e-4;  // sufficient decrease of the backtracking
-constexpr int kMaxHalvings = 20;
+constexpr double kNodeArmijo = 1e-4;  // sufficient decrease of the backtracking
+constexpr int kNodeMaxHalvings = 20;
 constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
 // Least work (sum over the patches' elements of their node count squared: a p = 5
 // triangle's 441 is about 40 us of Hessian a Newton step) for the patches to be optimised
@@ -174,11 +174,11 @@ class PatchOptimiser {
   }
 
   // Accepts node i's new position if its star's energy E is finite, lowers E0 enough
-  // (Armijo: by at least kArmijo t |slope|) and every element round it is certified;
+  // (Armijo: by at least kNodeArmijo t |slope|) and every element round it is certified;
   // then updates the stored energies and wakes the neighbours.
   bool accept(int i, double E0, double t, double slope) {
     const double E = star_energy(i, nullptr);
-    if (!(std::isfinite(E) && E < E0 + kArmijo * t * slope && star_certified(i))) return false;
+    if (!(std::isfinite(E) && E < E0 + kNodeArmijo * t * slope && star_certified(i))) return false;
     // Moves that lower the star's energy by less than kNegligible of it do not
     // wake the neighbours.
     const bool moved = E0 - E > kNegligible * E0;
@@ -225,7 +225,7 @@ class PatchOptimiser {
     if (du == 0) return;
     const double slope = gu * du;
     double t = 1;
-    for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
+    for (int halving = 0; halving <= kNodeMaxHalvings; ++halving, t *= 0.5) {
       x_.col(node) = on_curve(node, u0 + t * du, nullptr);
       if (accept(i, E0, t, slope)) {
         sliding_.u(node) = u0 + t * du;
@@ -275,7 +275,7 @@ class PatchOptimiser {
     if (dir.norm() > cap) dir *= cap / dir.norm();
     const double slope = g.dot(dir);
     double t = 1;
-    for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
+    for (int halving = 0; halving <= kNodeMaxHalvings; ++halving, t *= 0.5) {
       x_.col(node) = x0 + t * dir;
       if (accept(i, E0, t, slope)) return;
     }

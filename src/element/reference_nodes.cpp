@@ -8,7 +8,7 @@
 namespace homesh {
 namespace {
 
-void check_order(int p, const char* what) {
+void check_reference_order(int p, const char* what) {
   if (p < 1) throw Error(std::string(what) + ": order " + std::to_string(p) + " must be >= 1");
 }
 
@@ -30,19 +30,19 @@ void fill_indices(int p, int shift, int first, Eigen::Matrix2Xi& ij) {
 }  // namespace
 
 Eigen::Matrix2Xi reference_node_indices(int p) {
-  check_order(p, "reference_node_indices");
+  check_reference_order(p, "reference_node_indices");
   Eigen::Matrix2Xi ij(2, triangle_node_count(p));
   fill_indices(p, 0, 0, ij);
   return ij;
 }
 
 Eigen::Matrix2Xd reference_nodes(int p) {
-  check_order(p, "reference_nodes");
+  check_reference_order(p, "reference_nodes");
   return reference_node_indices(p).cast<double>() * (1.0 / p);
 }
 
 Eigen::RowVectorXd reference_line_nodes(int p) {
-  check_order(p, "reference_line_nodes");
+  check_reference_order(p, "reference_line_nodes");
   const double h = 1.0 / p;
   Eigen::RowVectorXd t(p + 1);
   t(0) = 0.0;

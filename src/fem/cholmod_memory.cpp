@@ -38,7 +38,7 @@ struct Registry {
   std::size_t kept_bytes = 0;
 };
 
-Registry& registry() {
+Registry& block_registry() {
   static Registry* r = new Registry;  // never destroyed: CHOLMOD may free at exit
   return *r;
 }
@@ -67,7 +67,7 @@ void* allocate(std::size_t bytes) {
 #if defined(HOMESH_MAPPED_BLOCKS)
   if (bytes < kHugePage) return std::malloc(bytes);
   const std::size_t need = whole_huge_pages(bytes);
-  Registry& r = registry();
+  Registry& r = block_registry();
   {
     // The smallest kept block that fits and wastes at most its half.
     std::lock_guard<std::mutex> lock(r.mutex);
@@ -106,7 +106,7 @@ void* allocate_zeroed(std::size_t count, std::size_t size) {
 void release(void* p) {
   if (!p) return;
 #if defined(HOMESH_MAPPED_BLOCKS)
-  Registry& r = registry();
+  Registry& r = block_registry();
   std::vector<Block> unmap;
   {
     std::lock_guard<std::mutex> lock(r.mutex);
@@ -135,7 +135,7 @@ void* reallocate(void* p, std::size_t bytes) {
 #if defined(HOMESH_MAPPED_BLOCKS)
   std::size_t old = 0;
   {
-    Registry& r = registry();
+    Registry& r = block_registry();
     std::lock_guard<std::mutex> lock(r.mutex);
     const auto it = r.mapped.find(p);
     if (it != r.mapped.end()) old = it->second;
@@ -154,7 +154,7 @@ void* reallocate(void* p, std::size_t bytes) {
 }
 
 Stats stats() {
-  Registry& r = registry();
+  Registry& r = block_registry();
   std::lock_guard<std::mutex> lock(r.mutex);
   return {r.mapped.size(), r.kept.size(), r.kept_bytes};
 }

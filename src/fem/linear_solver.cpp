@@ -77,11 +77,11 @@ struct Cg : Backend {
   }
 };
 
-using Factory = std::unique_ptr<Backend> (*)(const LinearSolverOptions&);
+using BackendFactory = std::unique_ptr<Backend> (*)(const LinearSolverOptions&);
 
 // The one list of solvers: name and factory.
-const std::vector<std::pair<std::string, Factory>>& registry() {
-  static const std::vector<std::pair<std::string, Factory>> entries = {
+const std::vector<std::pair<std::string, BackendFactory>>& backend_registry() {
+  static const std::vector<std::pair<std::string, BackendFactory>> entries = {
       {"cholmod",
        [](const LinearSolverOptions&) -> std::unique_ptr<Backend> {
          return std::make_unique<Cholmod>();
@@ -101,7 +101,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
 const std::vector<std::string>& linear_solver_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> list;
-    for (const auto& entry : registry()) list.push_back(entry.first);
+    for (const auto& entry : backend_registry()) list.push_back(entry.first);
     return list;
   }();
   return names;
@@ -115,7 +115,7 @@ struct LinearSolver::State {
 };
 
 LinearSolver::LinearSolver(LinearSolverOptions options) : state_(std::make_unique<State>()) {
-  for (const auto& [name, factory] : registry())
+  for (const auto& [name, factory] : backend_registry())
     if (name == options.method) state_->backend = factory(options);
   if (!state_->backend) {
     std::string list;

@@ -49,11 +49,11 @@ Preconditioner incomplete_cholesky(const Eigen::SparseMatrix<double>& K) {
   return [factor](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = factor->solve(r); };
 }
 
-using Factory = Preconditioner (*)(const Eigen::SparseMatrix<double>&);
+using PreconditionerFactory = Preconditioner (*)(const Eigen::SparseMatrix<double>&);
 
 // The one list of preconditioners: name and factory.
-const std::vector<std::pair<std::string, Factory>>& registry() {
-  static const std::vector<std::pair<std::string, Factory>> entries = {
+const std::vector<std::pair<std::string, PreconditionerFactory>>& preconditioner_registry() {
+  static const std::vector<std::pair<std::string, PreconditionerFactory>> entries = {
       {"jacobi", jacobi}, {"block_jacobi", block_jacobi}, {"ichol", incomplete_cholesky}};
   return entries;
 }
@@ -63,14 +63,14 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
 const std::vector<std::string>& preconditioner_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> list;
-    for (const auto& entry : registry()) list.push_back(entry.first);
+    for (const auto& entry : preconditioner_registry()) list.push_back(entry.first);
     return list;
   }();
   return names;
 }
 
 Preconditioner make_preconditioner(const std::string& name, const Eigen::SparseMatrix<double>& K) {
-  for (const auto& [known, factory] : registry())
+  for (const auto& [known, factory] : preconditioner_registry())
     if (known == name) return factory(K);
   std::string list;
   for (const std::string& n : preconditioner_names()) list += (list.empty() ? "" : ", ") + n;

@@ -12,7 +12,7 @@
 namespace homesh {
 namespace {
 
-void check_order(int p, const char* what) {
+void check_vtk_order(int p, const char* what) {
   if (p < 1) throw Error(std::string(what) + ": order " + std::to_string(p) + " must be >= 1");
 }
 
@@ -46,7 +46,7 @@ Eigen::Vector3i barycentric_index(int index, int order) {
 }  // namespace
 
 Eigen::Matrix2Xi vtk_triangle_node_indices(int p) {
-  check_order(p, "vtk_triangle_node_indices");
+  check_vtk_order(p, "vtk_triangle_node_indices");
   Eigen::Matrix2Xi ij(2, triangle_node_count(p));
   for (int k = 0; k < ij.cols(); ++k) ij.col(k) = barycentric_index(k, p).head<2>();
   return ij;
@@ -66,7 +66,7 @@ std::vector<int> gmsh_to_vtk_triangle(int p) {
 }
 
 Eigen::Matrix2Xi vtk_quad_node_indices(int p) {
-  check_order(p, "vtk_quad_node_indices");
+  check_vtk_order(p, "vtk_quad_node_indices");
   Eigen::Matrix2Xi ij(2, quad_node_count(p));
   int k = 0;
   auto put = [&](int i, int j) { ij.col(k++) << i, j; };
@@ -94,7 +94,7 @@ std::vector<int> gmsh_to_vtk_quad(int p) {
 }
 
 std::vector<int> line_nodes_along(int p) {
-  check_order(p, "line_nodes_along");
+  check_vtk_order(p, "line_nodes_along");
   const Eigen::RowVectorXd t = reference_line_nodes(p);
   std::vector<int> along(static_cast<std::size_t>(p + 1));
   std::iota(along.begin(), along.end(), 0);

@@ -63,7 +63,7 @@ struct JacobianTables {
   std::vector<ProductTerm> product;
 };
 
-void check_order(const char* who, int p) {
+void check_bezier_order(const char* who, int p) {
   if (p < 1 || p > kMaxBezierJacobianOrder) {
     throw Error(std::string(who) + ": order " + std::to_string(p) + " not in [1, " +
                 std::to_string(kMaxBezierJacobianOrder) + "]");
@@ -74,7 +74,7 @@ void check_order(const char* who, int p) {
 
 void jacobian_control_points(const Eigen::Matrix2Xd& X, int p, Eigen::Ref<Eigen::Matrix2Xd> U,
                              Eigen::Ref<Eigen::Matrix2Xd> V) {
-  check_order("jacobian_control_points", p);
+  check_bezier_order("jacobian_control_points", p);
   const int n = bezier_size(p), m = bezier_size(p - 1);
   if (X.cols() != n) {
     throw Error("jacobian_control_points: an order " + std::to_string(p) + " triangle has " +
@@ -106,7 +106,7 @@ void jacobian_control_points(const Eigen::Matrix2Xd& X, int p, Eigen::Ref<Eigen:
 void jacobian_determinant_bezier(const Eigen::Ref<const Eigen::Matrix2Xd>& U,
                                  const Eigen::Ref<const Eigen::Matrix2Xd>& V, int p,
                                  Eigen::Ref<Eigen::VectorXd> c) {
-  check_order("jacobian_determinant_bezier", p);
+  check_bezier_order("jacobian_determinant_bezier", p);
   if (U.cols() != bezier_size(p - 1) || V.cols() != U.cols() ||
       c.size() != bezier_size(2 * (p - 1))) {
     throw Error("jacobian_determinant_bezier: sizes do not match order " + std::to_string(p));
@@ -119,7 +119,7 @@ void jacobian_determinant_bezier(const Eigen::Ref<const Eigen::Matrix2Xd>& U,
 }
 
 Eigen::VectorXd jacobian_determinant_bezier(const Eigen::Matrix2Xd& X, int p) {
-  check_order("jacobian_determinant_bezier", p);
+  check_bezier_order("jacobian_determinant_bezier", p);
   JacobianControlPoints U(2, bezier_size(p - 1)), V(2, bezier_size(p - 1));
   jacobian_control_points(X, p, U, V);
   Eigen::VectorXd c(bezier_size(2 * (p - 1)));

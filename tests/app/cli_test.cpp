@@ -17,14 +17,11 @@ using homesh::test::TempDir;
 
 namespace {
 
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
 
 bool exists(const std::string& path) { return std::ifstream(path).good(); }
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using homesh::test::read;
 
 int number_after(const std::string& text, const std::string& pattern) {
   std::smatch m;

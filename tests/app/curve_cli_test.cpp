@@ -18,7 +18,7 @@ using homesh::test::run_homesh;
 using homesh::test::TempDir;
 
 namespace {
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
 }
 
 TEST_CASE("curve: the plate's hole nodes lie on the circle, every element valid", "[app]") {

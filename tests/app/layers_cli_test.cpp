@@ -20,7 +20,7 @@ using homesh::test::TempDir;
 
 namespace {
 
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
 
 struct LayerLog {
   int wall_edges = 0, fans = 0, before = 0, after = 0, corner_triangles = 0;

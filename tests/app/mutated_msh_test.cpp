@@ -20,13 +20,10 @@ using homesh::test::TempDir;
 
 namespace {
 
-const std::string homesh_binary = HOMESH_BINARY;
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
+using homesh::test::homesh_binary;
 
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using homesh::test::read;
 
 std::vector<std::string> lines_of(const std::string& s) {
   std::vector<std::string> out;

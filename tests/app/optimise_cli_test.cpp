@@ -10,7 +10,7 @@
 using homesh::test::run_homesh;
 
 namespace {
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
 }
 
 // The main job's mesh (scripts/naca7526.sh) at p = 3, solved (placed=2): curve leaves no element

@@ -17,7 +17,7 @@ using homesh::test::TempDir;
 
 namespace {
 
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
 
 // A quadratic plate-with-hole mesh with one interior edge node pushed far
 // across its triangles, written in DIR: corners fine, curved elements invalid.

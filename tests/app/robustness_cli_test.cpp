@@ -25,13 +25,10 @@ using homesh::test::TempDir;
 
 namespace {
 
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
-const std::string homesh_binary = HOMESH_BINARY;
+using homesh::test::geo;
+using homesh::test::homesh_binary;
 
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using homesh::test::read;
 
 void write(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

@@ -14,7 +14,7 @@
 using homesh::test::run_homesh;
 
 namespace {
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
 }
 
 TEST_CASE("rotate: the plate's hole turns 10 degrees, the output is that state, valid", "[app]") {

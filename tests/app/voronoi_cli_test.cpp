@@ -19,7 +19,7 @@ using homesh::test::TempDir;
 
 namespace {
 
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
 
 // The number in the log after `label`, e.g. "... (\d+) triangles".
 int logged(const std::string& log, const std::string& pattern) {

@@ -12,7 +12,7 @@ using homesh::test::TempDir;
 
 namespace {
 
-const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+using homesh::test::geo;
 
 std::string text_of(const std::string& path) {
   std::ifstream in(path);
@@ -22,7 +22,7 @@ std::string text_of(const std::string& path) {
 }
 
 // One quadratic triangle whose edge 1-2 node lies beyond corner 0: det J < 0 there.
-std::string write_invalid_mesh(const TempDir& dir) {
+std::string write_inverted_triangle(const TempDir& dir) {
   const std::string path = dir / "invalid.msh";
   std::ofstream(path) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n6\n1 0 0 0\n2 1 0 0\n"
                          "3 0 1 0\n4 0.5 0 0\n5 -0.2 -0.2 0\n6 0 0.5 0\n$EndNodes\n$Elements\n1\n"
@@ -49,7 +49,7 @@ TEST_CASE("the CLI writes a .vtu with Lagrange cells and the certified minJ/maxJ
 
 TEST_CASE("an invalid mesh is not written to a .vtu unless asked", "[app][vtu]") {
   const TempDir dir;
-  const std::string in = write_invalid_mesh(dir), out = dir / "invalid.vtu";
+  const std::string in = write_inverted_triangle(dir), out = dir / "invalid.vtu";
   auto r = run_homesh(in + " " + out);
   INFO(r.output);
   REQUIRE(r.exit_code == 1);

@@ -25,10 +25,7 @@ using homesh::AtomicFile;
 
 namespace {
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using homesh::test::read;
 
 void write_plain(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 

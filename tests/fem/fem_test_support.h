@@ -19,6 +19,15 @@
 
 namespace homesh::fem_test {
 
+/// The affine displacement of the patch tests, u(x) = G x + s: every element
+/// of any order must reproduce it exactly, with the constant strain sym(G).
+inline const Eigen::Matrix2d kPatchGradient =
+    (Eigen::Matrix2d() << 0.02, -0.05, 0.03, 0.04).finished();
+inline const Eigen::Vector2d kPatchShift(0.01, -0.02);
+inline Eigen::Vector2d patch_field(const Eigen::Vector2d& x) {
+  return kPatchGradient * x + kPatchShift;
+}
+
 // Structured n by n linear triangles on the parameter square [0, 1]^2 (each cell
 // cut along its diagonal, both triangles counter-clockwise), raised to order p
 // with straight sides.

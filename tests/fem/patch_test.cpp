@@ -11,19 +11,14 @@ using namespace homesh::fem_test;
 
 namespace {
 
-const Eigen::Matrix2d kGradient = (Eigen::Matrix2d() << 0.02, -0.05, 0.03, 0.04).finished();
-const Eigen::Vector2d kShift(0.01, -0.02);
-
-Eigen::Vector2d linear(const Eigen::Vector2d& x) { return kGradient * x + kShift; }
-
 DirichletBC boundary_condition(const Mesh& m, const std::vector<int>& nodes) {
   DirichletBC bc;
-  for (int i : nodes) bc.fix(i, linear(m.x.col(i)));
+  for (int i : nodes) bc.fix(i, patch_field(m.x.col(i)));
   return bc;
 }
 
 double max_error(const Mesh& m, const Eigen::Matrix2Xd& u) {
-  return (u - interpolate(m, linear)).cwiseAbs().maxCoeff();
+  return (u - interpolate(m, patch_field)).cwiseAbs().maxCoeff();
 }
 
 }  // namespace
@@ -53,7 +48,7 @@ TEST_CASE("patch test with varying E, nu and temperature balanced by a body forc
   // (an affine coefficient of x(u, v) times dN/dx det J, or N f det J), so the
   // quadrature margin is p.
   const Eigen::Vector2d grad_lambda(0.3, -0.2), grad_mu(0.1, 0.25), grad_s(-0.4, 0.15);
-  const Eigen::Matrix2d eps = 0.5 * (kGradient + kGradient.transpose());
+  const Eigen::Matrix2d eps = 0.5 * (kPatchGradient + kPatchGradient.transpose());
   const Eigen::Vector2d force = -(eps.trace() * grad_lambda + 2.0 * eps * grad_mu + grad_s);
   auto lambda = [&](const Eigen::Vector2d& x) { return 1.0 + grad_lambda.dot(x); };
   auto mu = [&](const Eigen::Vector2d& x) { return 0.8 + grad_mu.dot(x); };

@@ -18,11 +18,6 @@ using namespace homesh::fem_test;
 
 namespace {
 
-const Eigen::Matrix2d kGradient = (Eigen::Matrix2d() << 0.02, -0.05, 0.03, 0.04).finished();
-const Eigen::Vector2d kShift(0.01, -0.02);
-
-Eigen::Vector2d affine(const Eigen::Vector2d& x) { return kGradient * x + kShift; }
-
 // The 2 #nodes interleaved vectors of the three rigid motions at x.
 Eigen::MatrixXd rigid_motions(const Eigen::Matrix2Xd& x) {
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(2 * x.cols(), 3);
@@ -103,12 +98,12 @@ TEST_CASE(
       const std::vector<int> boundary = square_boundary(m);
       warp(m, curve);
       DirichletBC bc;
-      for (int i : boundary) bc.fix(i, affine(m.x.col(i)));
+      for (int i : boundary) bc.fix(i, patch_field(m.x.col(i)));
       ElasticityCoefficients c;
       c.poisson = 0.45;
       c.young = 2.0;
       const ElasticitySolution s = solve_elasticity(m, c, bc);
-      CHECK((s.u - interpolate(m, affine)).cwiseAbs().maxCoeff() < 1e-10);
+      CHECK((s.u - interpolate(m, patch_field)).cwiseAbs().maxCoeff() < 1e-10);
     }
   }
   // Quadrilaterals alone, the triangle matrix left empty (0 by 0).
@@ -118,9 +113,9 @@ TEST_CASE(
   warp(m, 0.04);
   DirichletBC bc;
   for (int i = 0; i < m.num_nodes(); ++i)
-    if (m.node_class[i].dim < 2) bc.fix(i, affine(m.x.col(i)));
+    if (m.node_class[i].dim < 2) bc.fix(i, patch_field(m.x.col(i)));
   const ElasticitySolution s = solve_elasticity(m, ElasticityCoefficients{}, bc);
-  CHECK((s.u - interpolate(m, affine)).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK((s.u - interpolate(m, patch_field)).cwiseAbs().maxCoeff() < 1e-12);
 }
 
 TEST_CASE("quads and mixed meshes: L2 error at rate p + 1, energy error at rate p, p = 1..3",

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "quality/bezier_triangle.h"
+#include "reference_points.h"
 
 using namespace homesh;
 
@@ -21,13 +22,6 @@ Eigen::Vector2d to_parent(int s, const Eigen::Vector2d& uv) {
     default:
       return Eigen::Vector2d((1 - uv(0)) / 2, (1 - uv(1)) / 2);
   }
-}
-
-Eigen::Vector2d random_point(std::mt19937& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  Eigen::Vector2d uv(unit(rng), unit(rng));
-  if (uv.sum() > 1.0) uv = Eigen::Vector2d(1.0 - uv(1), 1.0 - uv(0));
-  return uv;
 }
 
 Eigen::VectorXd random_coefficients(int d, std::mt19937& rng) {
@@ -49,7 +43,7 @@ TEST_CASE("subdivision: each piece is the polynomial on its sub-triangle", "[bez
     for (int s = 0; s < 4; ++s) {
       INFO("S" << s);
       for (int q = 0; q < 20; ++q) {
-        const Eigen::Vector2d uv = random_point(rng);
+        const Eigen::Vector2d uv = test::random_reference_point(rng);
         CHECK(bezier_value(d, sub.col(s), uv) ==
               Approx(bezier_value(d, c, to_parent(s, uv))).margin(1e-12));
       }

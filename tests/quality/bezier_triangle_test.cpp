@@ -5,19 +5,9 @@
 
 #include "core/error.h"
 #include "element/reference_nodes.h"
+#include "reference_points.h"
 
 using namespace homesh;
-
-namespace {
-
-Eigen::Vector2d random_point(std::mt19937& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  Eigen::Vector2d uv(unit(rng), unit(rng));
-  if (uv.sum() > 1.0) uv = Eigen::Vector2d(1.0 - uv(1), 1.0 - uv(0));
-  return uv;
-}
-
-}  // namespace
 
 TEST_CASE("Bernstein basis: non-negative partition of unity, unit at the corners", "[bezier]") {
   std::mt19937 rng(1);
@@ -25,7 +15,7 @@ TEST_CASE("Bernstein basis: non-negative partition of unity, unit at the corners
     INFO("d = " << d);
     REQUIRE(bernstein_basis(d, Eigen::Vector2d(0.2, 0.3)).size() == bezier_size(d));
     for (int q = 0; q < 50; ++q) {
-      const Eigen::VectorXd B = bernstein_basis(d, random_point(rng));
+      const Eigen::VectorXd B = bernstein_basis(d, test::random_reference_point(rng));
       CHECK(B.minCoeff() >= 0.0);
       CHECK(B.sum() == Approx(1.0).epsilon(1e-14));
     }
@@ -51,7 +41,7 @@ TEST_CASE("Bernstein basis: the coordinates have the domain points as coefficien
       }
     }
     for (int q = 0; q < 20; ++q) {
-      const Eigen::Vector2d uv = random_point(rng);
+      const Eigen::Vector2d uv = test::random_reference_point(rng);
       CHECK(bezier_value(d, cu, uv) == Approx(uv(0)).margin(1e-14));
       CHECK(bezier_value(d, cv, uv) == Approx(uv(1)).margin(1e-14));
     }

@@ -11,17 +11,11 @@
 #include "element/reference_nodes.h"
 #include "quality/bezier_jacobian.h"
 #include "quality/bezier_triangle.h"
+#include "reference_points.h"
 
 using namespace homesh;
 
 namespace {
-
-Eigen::Vector2d random_point(std::mt19937& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  Eigen::Vector2d uv(unit(rng), unit(rng));
-  if (uv.sum() > 1.0) uv = Eigen::Vector2d(1.0 - uv(1), 1.0 - uv(0));
-  return uv;
-}
 
 // An order-p triangle: the nodes of a random counter-clockwise straight triangle
 // of unit size, the non-corner ones displaced by up to `amplitude` / p.
@@ -94,7 +88,7 @@ TEST_CASE("Bezier coefficients of det J reproduce det J", "[bounds]") {
       const Eigen::VectorXd c = jacobian_determinant_bezier(X, p);
       REQUIRE(c.size() == bezier_size(d));
       for (int q = 0; q < 200; ++q) {
-        const Eigen::Vector2d uv = random_point(rng);
+        const Eigen::Vector2d uv = test::random_reference_point(rng);
         CHECK(bezier_value(d, c, uv) == Approx(direct_det_j(basis, X, uv)).margin(1e-12));
       }
     }
@@ -116,7 +110,7 @@ TEST_CASE("derivative control points reproduce J, every order to 10", "[bounds]"
     jacobian_determinant_bezier(U, V, p, c);
     CHECK((c - jacobian_determinant_bezier(X, p)).cwiseAbs().maxCoeff() == 0.0);
     for (int q = 0; q < 50; ++q) {
-      const Eigen::Vector2d uv = random_point(rng);
+      const Eigen::Vector2d uv = test::random_reference_point(rng);
       const Eigen::VectorXd B = bernstein_basis(p - 1, uv);
       Eigen::Matrix2d J;
       J << p * U * B, p * V * B;
@@ -139,7 +133,7 @@ TEST_CASE("bounds contain det J at 10^4 random points, valid and invalid element
       const JacobianBounds b = jacobian_bounds(X, p);
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for (int q = 0; q < 10000; ++q) {
-        const double J = direct_det_j(basis, X, random_point(rng));
+        const double J = direct_det_j(basis, X, test::random_reference_point(rng));
         lo = std::min(lo, J);
         hi = std::max(hi, J);
       }

@@ -14,7 +14,7 @@
 namespace homesh {
 namespace {
 
-const std::vector<Eigen::Matrix2d>& samples() {
+const std::vector<Eigen::Matrix2d>& identity_samples() {
   static const std::vector<Eigen::Matrix2d> W = test::random_valid_jacobians(2000, 19);
   return W;
 }
@@ -32,7 +32,7 @@ TEST_CASE("W is I for the unit equilateral triangle and s R for any equilateral 
 }
 
 TEST_CASE("Q6 = Q7 = Q11 = Q12 in 2D, and raw Q12 is twice raw Q6, Q7, Q11", "[quality]") {
-  for (const Eigen::Matrix2d& W : samples()) {
+  for (const Eigen::Matrix2d& W : identity_samples()) {
     const double q6 = smoothness_quality(W);
     REQUIRE(aspect_ratio_quality(W) == Approx(q6).epsilon(1e-12));
     REQUIRE(condition_number_quality(W) == Approx(q6).epsilon(1e-12));
@@ -45,14 +45,14 @@ TEST_CASE("Q6 = Q7 = Q11 = Q12 in 2D, and raw Q12 is twice raw Q6, Q7, Q11", "[q
 }
 
 TEST_CASE("Q2 = Q5 in 2D", "[quality]") {
-  for (const Eigen::Matrix2d& W : samples()) {
+  for (const Eigen::Matrix2d& W : identity_samples()) {
     REQUIRE(adjoint_raw(W) == Approx(laplace_raw(W)).epsilon(1e-13));
     REQUIRE(adjoint_quality(W) == Approx(laplace_quality(W)).epsilon(1e-13));
   }
 }
 
 TEST_CASE("Q8 and Q16 detect distortion identically: 1/Q16 - 1/Q8 = 1 raw", "[quality]") {
-  for (const Eigen::Matrix2d& W : samples()) {
+  for (const Eigen::Matrix2d& W : identity_samples()) {
     // "Q16 - Q8 = 1 in two dimensions" (Section 3.7.3), for the inverted forms.
     const double inv16 = 1.0 / metric_condition_number_raw(W);
     REQUIRE(inv16 - 1.0 / oddy_raw(W) == Approx(1.0).margin(1e-13 * inv16));
@@ -64,7 +64,7 @@ TEST_CASE("Q8 and Q16 detect distortion identically: 1/Q16 - 1/Q8 = 1 raw", "[qu
 }
 
 TEST_CASE("Q9 and Q10 are Q6 and Q7 rescaled by omega^(+-1/3); Q4 = Q17^2", "[quality]") {
-  for (const Eigen::Matrix2d& W : samples()) {
+  for (const Eigen::Matrix2d& W : identity_samples()) {
     const double cbrt_omega = std::cbrt(W.determinant());
     REQUIRE(nondimensional_smoothness_raw(W) == Approx(smoothness_raw(W) * cbrt_omega));
     REQUIRE(inverse_mean_ratio_raw(W) == Approx(aspect_ratio_raw(W) / cbrt_omega));
@@ -75,7 +75,7 @@ TEST_CASE("Q9 and Q10 are Q6 and Q7 rescaled by omega^(+-1/3); Q4 = Q17^2", "[qu
 
 TEST_CASE("dilation Q13 is flatter than Q17 around the ideal size; Q14 between Q12, Q13",
           "[quality]") {
-  for (const Eigen::Matrix2d& W : samples()) {
+  for (const Eigen::Matrix2d& W : identity_samples()) {
     const double q12 = shape_quality(W), q13 = dilation_quality(W);
     REQUIRE(q13 >= idealised_jacobian_quality(W) - 1e-15);
     const double q14 = shape_dilation_quality(W);

@@ -10,7 +10,7 @@
 namespace homesh {
 namespace {
 
-const std::vector<Eigen::Matrix2d>& samples() {
+const std::vector<Eigen::Matrix2d>& property_samples() {
   static const std::vector<Eigen::Matrix2d> W = test::random_valid_jacobians(2000);
   return W;
 }
@@ -23,11 +23,11 @@ double fraction_changed(
     const Measure& m,
     const std::function<Eigen::Matrix2d(int, const Eigen::Matrix2d&)>& transform) {
   int changed = 0;
-  for (size_t i = 0; i < samples().size(); ++i) {
-    const double q = m.quality(samples()[i]);
-    if (!close(m.quality(transform(static_cast<int>(i), samples()[i])), q)) ++changed;
+  for (size_t i = 0; i < property_samples().size(); ++i) {
+    const double q = m.quality(property_samples()[i]);
+    if (!close(m.quality(transform(static_cast<int>(i), property_samples()[i])), q)) ++changed;
   }
-  return static_cast<double>(changed) / samples().size();
+  return static_cast<double>(changed) / property_samples().size();
 }
 
 }  // namespace
@@ -37,7 +37,7 @@ TEST_CASE("every pointwise measure is in [0, 1] on valid W and 0 on invalid W", 
   for (const Measure& m : measures()) {
     if (!m.pointwise()) continue;
     INFO(m.name);
-    for (const Eigen::Matrix2d& W : samples()) {
+    for (const Eigen::Matrix2d& W : property_samples()) {
       const double q = m.quality(W);
       REQUIRE(q > 0.0);
       REQUIRE(q <= 1.0 + 1e-12);
@@ -74,7 +74,7 @@ TEST_CASE("quality is the raw Table 3.1 value normalised by its ideal value", "[
     INFO(m.name);
     const double ideal = m.raw(Eigen::Matrix2d::Identity());
     const bool folded = m.normalisation.rfind("min(", 0) == 0;
-    for (const Eigen::Matrix2d& W : samples()) {
+    for (const Eigen::Matrix2d& W : property_samples()) {
       const double x = m.raw(W) / ideal;
       if (folded) {
         REQUIRE(m.quality(W) == Approx(std::min(x, 1.0 / x)).epsilon(1e-12));
@@ -91,7 +91,7 @@ TEST_CASE("scale and rotation invariance match thesis Table 3.7", "[quality]") {
   std::mt19937 gen(11);
   std::uniform_real_distribution<double> log_s(0.5, 7.0), angle(0.1, 2.0 * M_PI - 0.1);
   std::vector<double> scales, angles;
-  for (size_t i = 0; i < samples().size(); ++i) {
+  for (size_t i = 0; i < property_samples().size(); ++i) {
     scales.push_back(std::exp(i % 2 ? log_s(gen) : -log_s(gen)));  // away from 1
     angles.push_back(angle(gen));
   }
@@ -133,7 +133,7 @@ TEST_CASE("relabelling the ideal triangle's corners rotates W on the right", "[q
   for (const Measure& m : measures()) {
     if (!m.pointwise()) continue;
     INFO(m.name);
-    for (const Eigen::Matrix2d& W : samples()) {
+    for (const Eigen::Matrix2d& W : property_samples()) {
       REQUIRE(m.quality(W * R) == Approx(m.quality(W)).epsilon(1e-10));
       REQUIRE(m.quality(W * R * R) == Approx(m.quality(W)).epsilon(1e-10));
     }

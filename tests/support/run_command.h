@@ -30,4 +30,11 @@ inline CommandResult run_homesh(const std::string& args) {
   return run_command(std::string(HOMESH_BINARY) + " " + args);
 }
 
+/// The homesh executable the CLI tests run.
+inline const std::string homesh_binary = HOMESH_BINARY;
+
+/// The project's geo/ folder (with its trailing slash), where the CLI tests
+/// find their .geo inputs.
+inline const std::string geo = std::string(HOMESH_SOURCE_DIR) + "/geo/";
+
 }  // namespace homesh::test

@@ -1,7 +1,7 @@
 #pragma once
 // Shared fixtures of the Voronoi tests: reproducible seeds, circumcentres,
 // the triangles of CGAL's Delaunay triangulation a grid partition can show,
-// and how far a seed set is from a degenerate one.
+// how far a seed set is from a degenerate one, and a triangle's mean ratio.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -13,6 +13,7 @@
 #include <set>
 #include <vector>
 
+#include "voronoi/cleanup/metric_smoothing.h"
 #include "voronoi/dual/cgal_delaunay.h"
 #include "voronoi/dual/dual_triangulation.h"
 #include "voronoi/grid/loop_distance.h"
@@ -120,6 +121,12 @@ inline std::set<std::array<int, 3>> rotated(const std::vector<std::array<int, 3>
     out.insert(t);
   }
   return out;
+}
+
+/// The mean ratio of the triangle with corners X's columns, in the plane's
+/// own metric (1 for an equilateral triangle).
+inline double euclidean_mean_ratio(const Eigen::Matrix<double, 2, 3>& X) {
+  return metric_mean_ratio(X.col(0), X.col(1), X.col(2), Eigen::Matrix2d::Identity());
 }
 
 }  // namespace homesh::test

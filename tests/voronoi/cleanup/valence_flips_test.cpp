@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "../voronoi_test_support.h"
 #include "voronoi/cleanup/metric_smoothing.h"
 
 using namespace homesh;
@@ -62,10 +63,6 @@ std::vector<int> valences(const Mesh& m) {
   return v;
 }
 
-double mean_ratio(const Eigen::Matrix<double, 2, 3>& X) {
-  return metric_mean_ratio(X.col(0), X.col(1), X.col(2), Eigen::Matrix2d::Identity());
-}
-
 // Flips the diagonal of cell (i, j): its two triangles become (p_ij,
 // p_i+1j, p_i+1j+1) and (p_ij, p_i+1j+1, p_ij+1), 30-30-120 degrees (mean
 // ratio 0.6), nodes (i, j) and (i+1, j+1) of valence 7, the others 5.
@@ -83,16 +80,16 @@ TEST_CASE("valence flips: a flipped diagonal of the equilateral lattice is flipp
   flip_cell(m, 2, 2);
   REQUIRE(valences(m)[node(2, 2)] == 7);
   REQUIRE(valences(m)[node(3, 2)] == 5);
-  REQUIRE(mean_ratio(m.triangle_nodes(2 * (2 + (kSide - 1) * 2))) == Approx(0.6));
+  REQUIRE(test::euclidean_mean_ratio(m.triangle_nodes(2 * (2 + (kSide - 1) * 2))) == Approx(0.6));
   // Valence energy 4 -> 0; the new triangles (mean ratio 1) above the floor.
-  CHECK(flip_to_regular_valence(m, interior(m), mean_ratio, 0.7) == 1);
+  CHECK(flip_to_regular_valence(m, interior(m), test::euclidean_mean_ratio, 0.7) == 1);
   const std::vector<int> v = valences(m);
   for (int k = 0; k < m.num_nodes(); ++k)
     if (m.node_class[k].dim == 2) CHECK(v[k] == 6);
   for (Eigen::Index t = 0; t < m.tri.cols(); ++t)
-    CHECK(mean_ratio(m.triangle_nodes(static_cast<int>(t))) == Approx(1.0));
+    CHECK(test::euclidean_mean_ratio(m.triangle_nodes(static_cast<int>(t))) == Approx(1.0));
   // The lattice itself is left alone: no flip lowers its energy.
-  CHECK(flip_to_regular_valence(m, interior(m), mean_ratio, 0.7) == 0);
+  CHECK(flip_to_regular_valence(m, interior(m), test::euclidean_mean_ratio, 0.7) == 0);
 }
 
 TEST_CASE("valence flips: no flip below the floor, of a line, or with no interior node counted",
@@ -105,7 +102,7 @@ TEST_CASE("valence flips: no flip below the floor, of a line, or with no interio
   // flip is made.
   const auto quality_of_new = [](double q) {
     return [q](const Eigen::Matrix<double, 2, 3>& X) {
-      return mean_ratio(X) > 0.99 ? q : mean_ratio(X);
+      return test::euclidean_mean_ratio(X) > 0.99 ? q : test::euclidean_mean_ratio(X);
     };
   };
   CHECK(flip_to_regular_valence(m, interior(m), quality_of_new(0.55), 0.7) == 0);
@@ -115,9 +112,10 @@ TEST_CASE("valence flips: no flip below the floor, of a line, or with no interio
   m.line.conservativeResize(2, m.line.cols() + 1);
   m.line.col(m.line.cols() - 1) << node(2, 2), node(3, 3);
   m.line_entity.push_back(2);
-  CHECK(flip_to_regular_valence(m, interior(m), mean_ratio, 0.7) == 0);
+  CHECK(flip_to_regular_valence(m, interior(m), test::euclidean_mean_ratio, 0.7) == 0);
   m = flipped;
-  CHECK(flip_to_regular_valence(m, std::vector<char>(m.num_nodes(), 0), mean_ratio, 0.7) == 0);
+  CHECK(flip_to_regular_valence(m, std::vector<char>(m.num_nodes(), 0), test::euclidean_mean_ratio,
+                                0.7) == 0);
   CHECK(m.tri == flipped.tri);
-  CHECK_THROWS(flip_to_regular_valence(m, {1, 0}, mean_ratio, 0.7));
+  CHECK_THROWS(flip_to_regular_valence(m, {1, 0}, test::euclidean_mean_ratio, 0.7));
 }

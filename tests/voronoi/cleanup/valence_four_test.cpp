@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "../voronoi_test_support.h"
 #include "voronoi/cleanup/metric_smoothing.h"
 
 using namespace homesh;
@@ -23,10 +24,6 @@ Mesh fan(const Eigen::Matrix<double, 2, 4>& quad, const Eigen::Vector2d& centre)
   return m;
 }
 
-double mean_ratio(const Eigen::Matrix<double, 2, 3>& X) {
-  return metric_mean_ratio(X.col(0), X.col(1), X.col(2), Eigen::Matrix2d::Identity());
-}
-
 const std::vector<char> kCentreFree{0, 0, 0, 0, 1};
 
 }  // namespace
@@ -42,12 +39,12 @@ TEST_CASE(
   rhombus << 0, 0.5, 0, -0.5,  //
       -std::sqrt(3.0) / 2, 0, std::sqrt(3.0) / 2, 0;
   Mesh m = fan(rhombus, Eigen::Vector2d::Zero());
-  REQUIRE(mean_ratio(m.triangle_nodes(0)) == Approx(0.75));
-  const std::vector<int> gone = remove_valence_four(m, kCentreFree, mean_ratio);
+  REQUIRE(test::euclidean_mean_ratio(m.triangle_nodes(0)) == Approx(0.75));
+  const std::vector<int> gone = remove_valence_four(m, kCentreFree, test::euclidean_mean_ratio);
   CHECK(gone == std::vector<int>{4});
   REQUIRE(m.num_triangles() == 2);
   for (int t = 0; t < 2; ++t) {
-    CHECK(mean_ratio(m.triangle_nodes(t)) == Approx(1.0));
+    CHECK(test::euclidean_mean_ratio(m.triangle_nodes(t)) == Approx(1.0));
     for (int k = 0; k < 3; ++k) CHECK(m.tri(k, t) != 4);
   }
   CHECK(m.tri_entity == std::vector<int>{1, 1});
@@ -59,14 +56,14 @@ TEST_CASE("valence four: the centre of a square and a fixed node stay", "[vorono
   square << 1, 0, -1, 0,  //
       0, 1, 0, -1;
   Mesh m = fan(square, Eigen::Vector2d::Zero());
-  CHECK(remove_valence_four(m, kCentreFree, mean_ratio).empty());
+  CHECK(remove_valence_four(m, kCentreFree, test::euclidean_mean_ratio).empty());
   CHECK(m.num_triangles() == 4);
   // The rhombus again, but its centre not free.
   Eigen::Matrix<double, 2, 4> rhombus;
   rhombus << 0, 0.5, 0, -0.5,  //
       -std::sqrt(3.0) / 2, 0, std::sqrt(3.0) / 2, 0;
   Mesh fixed = fan(rhombus, Eigen::Vector2d::Zero());
-  CHECK(remove_valence_four(fixed, std::vector<char>(5, 0), mean_ratio).empty());
+  CHECK(remove_valence_four(fixed, std::vector<char>(5, 0), test::euclidean_mean_ratio).empty());
   CHECK(fixed.num_triangles() == 4);
 }
 
@@ -78,11 +75,11 @@ TEST_CASE("valence four: in a dart only the split through its reflex corner is t
   dart << 0, -0.2, 0, -1,  //
       -1, 0, 1, 0;
   Mesh d = fan(dart, Eigen::Vector2d(-0.5, 0.0));
-  CHECK(mean_ratio(d.triangle_nodes(0)) == Approx(0.437).margin(1e-3));
-  CHECK(remove_valence_four(d, kCentreFree, mean_ratio) == std::vector<int>{4});
+  CHECK(test::euclidean_mean_ratio(d.triangle_nodes(0)) == Approx(0.437).margin(1e-3));
+  CHECK(remove_valence_four(d, kCentreFree, test::euclidean_mean_ratio) == std::vector<int>{4});
   REQUIRE(d.num_triangles() == 2);
   for (int t = 0; t < 2; ++t) {
-    CHECK(mean_ratio(d.triangle_nodes(t)) == Approx(0.753).margin(1e-3));
+    CHECK(test::euclidean_mean_ratio(d.triangle_nodes(t)) == Approx(0.753).margin(1e-3));
     CHECK((d.tri.col(t).array() == 1).any());  // both on the diagonal 1-3
     CHECK((d.tri.col(t).array() == 3).any());
   }
