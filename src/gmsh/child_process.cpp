@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -28,7 +29,11 @@ constexpr int kFailed = 4;
 constexpr std::size_t kMaxReason = 4000;  // below a pipe's buffer: the report never blocks
 
 [[noreturn]] void child(const std::function<void(int)>& work, const ChildLimits& limits, int data,
-                        int report) {
+                        int report, pid_t parent) {
+  // The child ends with its parent: a homesh ended by SIGTERM or SIGINT (or
+  // killed) must not leave Gmsh meshing on, unseen, for minutes. The parent may
+  // have gone before the request: then getppid() is no longer it.
+  if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(kFailed);
   // A crash here must reach the parent as a signal, not through a handler the
   // process installed (libFuzzer's writes a crash file and exits with a code).
   for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
@@ -106,6 +111,7 @@ std::string run_in_child(const ChildLimits& limits, const ChildWording& wording,
     throw Error(wording.subject + ": cannot start a child process: " + std::strerror(errno));
   }
   std::fflush(nullptr);  // nothing buffered is written twice
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
     for (int fd : {data[0], data[1], report[0], report[1]}) close(fd);
@@ -114,7 +120,7 @@ std::string run_in_child(const ChildLimits& limits, const ChildWording& wording,
   if (pid == 0) {
     close(data[0]);
     close(report[0]);
-    child(work, limits, data[1], report[1]);
+    child(work, limits, data[1], report[1], parent);
   }
   close(data[1]);
   close(report[1]);

@@ -1,12 +1,17 @@
 // Interrupting a run (SIGINT, SIGTERM) leaves no partial output: neither a
-// half-written OUTPUT nor a temporary file beside it.
+// half-written OUTPUT nor a temporary file beside it, nor a process of it (the
+// child Gmsh meshes in) running on.
 #include <dirent.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "../support/temp_dir.h"
@@ -22,6 +27,27 @@ std::vector<std::string> files_in(const std::string& dir) {
     closedir(d);
   }
   return names;
+}
+
+// How many processes have `argument` among their command-line arguments.
+int processes_with_argument(const std::string& argument) {
+  int count = 0;
+  for (const std::string& name : files_in("/proc")) {
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream in("/proc/" + name + "/cmdline", std::ios::binary);
+    const std::string cmdline{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (cmdline.find(std::string(1, '\0') + argument + '\0') != std::string::npos) ++count;
+  }
+  return count;
+}
+
+// Whether every process with `argument` has ended within two seconds.
+bool all_ended(const std::string& argument) {
+  for (int k = 0; k < 40; ++k) {
+    if (processes_with_argument(argument) == 0) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return false;
 }
 
 }  // namespace
@@ -46,6 +72,9 @@ TEST_CASE("SIGINT or SIGTERM at any moment leaves no partial output", "[app]") {
       kill(pid, signal_number);
       int status = 0;
       waitpid(pid, &status, 0);
+      // Nothing of the run goes on: not the child that meshes (4 such children
+      // once burnt a core for minutes after their parents had ended).
+      CHECK(all_ended(out));
       const auto files = files_in(dir.path());
       if (WIFSIGNALED(status)) {  // killed before main() installed its handlers
         REQUIRE(files.empty());
