@@ -60,7 +60,11 @@ if [ "$failed" != 0 ]; then
   exit 1
 fi
 
-# A finding's input goes to $build/fuzz-artifacts/, not into the checkout.
+# A finding's input goes to $build/fuzz-artifacts/, not into the checkout. A
+# finding is a fuzzer's non-zero exit. oom-* files there after a passing run
+# come from the child that reads a .msh in Gmsh (gmsh/child_process.h): it
+# inherits libFuzzer's malloc limit, and a corrupt count's allocation ends it
+# there; the parent reports that as an error naming the file, as it should.
 artifacts="$build/fuzz-artifacts"
 rm -rf "$artifacts" && mkdir -p "$artifacts"
 for fuzzer in "$build"/fuzz_*; do
