@@ -1,6 +1,6 @@
 // core/heap_prefault.h: the heap grown and its pages made resident by the helper,
-// without a byte of what the caller writes there meanwhile changed; nothing started
-// for small sizes, or where glibc's heap is not the allocator's.
+// without a byte of what the caller writes there meanwhile changed; small sizes made
+// resident at once, without a thread; nothing where glibc's heap is not the allocator's.
 #include "core/heap_prefault.h"
 
 #include <catch2/catch.hpp>
@@ -64,4 +64,30 @@ TEST_CASE("heap prefault: the grown heap resident, the data written meanwhile in
     changed += block[i] != static_cast<unsigned char>(i * 7 + 1);
   CHECK(changed == 0);
   std::free(block);
+}
+
+TEST_CASE("heap prefault: a small range resident at once, without a thread; a tiny one left",
+          "[core]") {
+  const homesh::AllocatorTuning& tuning = homesh::tune_allocator();
+  CHECK(homesh::HeapPrefault(std::size_t(32) << 10).bytes() == 0);  // below 64 KiB: nothing
+  const homesh::HeapPrefault prefault(std::size_t(1) << 20);
+  CHECK_FALSE(prefault.active());
+#if defined(__GLIBC__) && defined(__linux__)
+  if (!tuning.thresholds || homesh::kAddressSanitizer) {
+    CHECK(prefault.bytes() == 0);
+    return;
+  }
+  const long page = sysconf(_SC_PAGESIZE);
+  CHECK(prefault.bytes() + 2 * std::size_t(page) >= std::size_t(1) << 20);
+  // Populated before the constructor returned: every page resident.
+  REQUIRE(prefault.populated() == prefault.bytes());
+  std::vector<unsigned char> resident(prefault.bytes() / std::size_t(page));
+  REQUIRE(mincore(reinterpret_cast<void*>(prefault.first()), prefault.bytes(), resident.data()) ==
+          0);
+  std::size_t missing = 0;
+  for (unsigned char r : resident) missing += (r & 1) == 0;
+  CHECK(missing == 0);
+#else
+  (void)tuning;
+#endif
 }
