@@ -21,8 +21,8 @@ Referee: Gmsh's AnalyseMeshQuality per-element minJ/maxJ (scripts/bench/gmsh_ref
 invalid = count <= 0, worst = the minimum. Seconds: wall time of the curving call(s) only
 (homesh.curve; setOrder + optimize), each library imported before the clock starts (a
 fresh process's `import homesh` takes about 20 ms; the runs so far had it from the parent,
-which imports it through corpus.py's NACA example); stage_seconds: the time the curve stage reports in its
-results, if it reports any. A method still running after --timeout seconds (curving and
+which imports it through corpus.py's NACA example); stage_seconds: the time the curve stage
+reports in its results, if it reports any. A method still running after --timeout seconds (curving and
 referee) is killed and recorded as "timeout".
 
 Usage:
@@ -87,12 +87,13 @@ def child(conn, name, msh, p, method, rebuild):
         return
     conn.send(("built", rec))
     error, stage = "", ""
-    if method.split(" ")[0] == "homesh":
+    by_homesh = method.split(" ")[0] == "homesh"
+    if by_homesh:
         import homesh  # before the clock, as gmsh is: loading a library is not curving
         homesh.set_quiet(True)
     t = time.perf_counter()
     try:
-        if method.split(" ")[0] == "homesh":
+        if by_homesh:
             r = homesh.curve(p=p, **corpus.method_options(method))
             stage = (r.get("results") or {}).get("seconds", "")  # the whole curving
         else:

@@ -8,8 +8,6 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
@@ -34,8 +32,7 @@ int processes_with_argument(const std::string& argument) {
   int count = 0;
   for (const std::string& name : files_in("/proc")) {
     if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream in("/proc/" + name + "/cmdline", std::ios::binary);
-    const std::string cmdline{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string cmdline = homesh::test::read("/proc/" + name + "/cmdline");
     if (cmdline.find(std::string(1, '\0') + argument + '\0') != std::string::npos) ++count;
   }
   return count;
