@@ -370,6 +370,19 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
       for (int i : element_node_indices(m, e)) held[i] = true;
   const std::vector<OptimisationPatch> patches = optimisation_patches(m, poor, opt.layers, held);
   res.patches = static_cast<int>(patches.size());
+  // The worst valid element outside every patch, at least the threshold: once a patch's
+  // moved elements all reach it, its steps cannot raise the mesh's worst (patch_newton's
+  // `enough`; Gmsh's optimiser stops at its target, which here is where the rest of the
+  // mesh stands).
+  double enough = std::numeric_limits<double>::infinity();
+  {
+    std::vector<bool> in_patch(m.num_elements_2d(), false);
+    for (const OptimisationPatch& patch : patches)
+      for (int e : patch.elements) in_patch[e] = true;
+    for (int e = 0; e < m.num_elements_2d(); ++e)
+      if (!in_patch[e] && valid[e]) enough = std::min(enough, ratio(e));
+    enough = std::max(enough, opt.threshold);
+  }
   // The lattice of order 2 (p - 1) where a triangle's det J has its Bezier coefficients is
   // a single point at p = 1 (det J constant): no lattice there.
   const int degree = opt.quadrature_degree > 0 ? opt.quadrature_degree : 2 * m.order;
@@ -428,6 +441,9 @@ OptimiseResult optimise_pass(const Mesh& m, const std::vector<bool>& fixed,
       problem.energy = opt.energy;
       problem.bounds = opt.bounds;
       problem.floor = worst;
+      problem.enough = opt.until == OptimiseOptions::Until::rest
+                           ? enough
+                           : std::numeric_limits<double>::infinity();
       o.newton =
           patch_newton(problem, x, sliding, opt.newton_iterations, opt.newton_tolerance).iterations;
     }

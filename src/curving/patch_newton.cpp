@@ -148,12 +148,17 @@ class PatchNewton {
     }
   }
 
-  // Every element with a free node certified valid with minJ/maxJ >= floor.
-  bool certified() {
+  // Every element with a free node certified valid with minJ/maxJ >= floor; `least`
+  // receives the smallest of their minJ/maxJ if they are.
+  bool certified(double& least) {
+    least = std::numeric_limits<double>::infinity();
     for (std::size_t le = 0; le < elements_.size(); ++le) {
       if (slot_free_[le].empty()) continue;
       const JacobianBounds b = element_jacobian_bounds(m_, elements_[le], gather(le), p_.bounds);
-      if (!b.valid_certified || scaled_jacobian_ratio(b) < p_.floor) return false;
+      if (!b.valid_certified) return false;
+      const double ratio = scaled_jacobian_ratio(b);
+      if (ratio < p_.floor) return false;
+      least = std::min(least, ratio);
     }
     return true;
   }
@@ -245,7 +250,7 @@ PatchNewtonResult patch_newton(const PatchProblem& problem, Eigen::Matrix2Xd& x,
     d = d.cwiseMax(1e-12 * dmax);
     pn.save();
     bool accepted = false, raised = false;
-    double E_new = E, decrement = 0;
+    double E_new = E, decrement = 0, least = 0;
     for (int damping = 0; damping <= kMaxDampings && !accepted; ++damping) {
       std::copy_n(H.valuePtr(), H.nonZeros(), A.valuePtr());
       for (Eigen::Index i = 0; i < A.rows(); ++i) A.valuePtr()[outer[i]] += lambda * d(i);
@@ -258,7 +263,7 @@ PatchNewtonResult patch_newton(const PatchProblem& problem, Eigen::Matrix2Xd& x,
           for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
             pn.move(step, t);
             E_new = pn.energy();
-            if (std::isfinite(E_new) && E_new < E + kArmijo * t * slope && pn.certified()) {
+            if (std::isfinite(E_new) && E_new < E + kArmijo * t * slope && pn.certified(least)) {
               accepted = true;
               break;
             }
@@ -279,7 +284,9 @@ PatchNewtonResult patch_newton(const PatchProblem& problem, Eigen::Matrix2Xd& x,
     // Converged when the step's predicted decrease (the Newton decrement -g.d) is below
     // tolerance: a small actual decrease alone also happens on the way (a step cut short
     // by the barrier before the energy falls by orders of magnitude).
-    const bool converged = !(decrement > tolerance * E);
+    // Also done when every moved element is at least `enough`: the mesh's worst is then
+    // outside the patch, and further steps only raise the patch's better elements.
+    const bool converged = !(decrement > tolerance * E) || least >= problem.enough;
     E = E_new;
     if (converged) break;
   }

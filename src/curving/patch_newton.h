@@ -31,6 +31,7 @@
 // held, and the sweeps need hundreds of passes (ellipse10_bl_1e-4 p = 3:
 // worst minJ/maxJ 0.70 after 3 x 60 sweeps, 0.82 after 600, 16 s).
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "core/mesh.h"
@@ -96,6 +97,10 @@ struct PatchProblem {
   BoundsOptions bounds;
   /// No accepted step takes an element below this certified minJ/maxJ.
   double floor = 0;
+  /// The steps end once every element with a free node is certified at least this (the
+  /// worst of the mesh outside the patches: steps beyond it cannot raise the mesh's
+  /// worst); +infinity: never.
+  double enough = std::numeric_limits<double>::infinity();
 };
 
 struct PatchNewtonResult {
@@ -105,8 +110,9 @@ struct PatchNewtonResult {
 
 /// At most max_iterations accepted steps on the nodes x (all of the mesh's; only
 /// the patch's free nodes change, sliding nodes' u in `sliding` with them);
-/// stops when a step lowers the energy by less than `tolerance` (relative) or
-/// no damping gives an acceptable step. Safe to run on patches sharing no free
+/// stops when a step lowers the energy by less than `tolerance` (relative), when every
+/// element with a free node reaches problem.enough, or when no damping gives an
+/// acceptable step. Safe to run on patches sharing no free
 /// node in parallel.
 PatchNewtonResult patch_newton(const PatchProblem& problem, Eigen::Matrix2Xd& x,
                                SlidingNodes& sliding, int max_iterations, double tolerance);

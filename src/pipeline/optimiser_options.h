@@ -8,9 +8,9 @@
 
 namespace homesh {
 
-/// Adds threshold, sweeps, newton, newton_tol, lattice, patch_first and slide to `table`, read into
-/// the OptimiseOptions that `optimiser` gives (a pointer to a data member of T or a callable T& ->
-/// OptimiseOptions&).
+/// Adds threshold, sweeps, newton, newton_tol, until, lattice, patch_first and slide to `table`,
+/// read into the OptimiseOptions that `optimiser` gives (a pointer to a data member of T or a
+/// callable T& -> OptimiseOptions&).
 template <class T, class Optimiser>
 void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
   const std::function<OptimiseOptions&(T&)> o = optimiser;
@@ -27,6 +27,12 @@ void add_optimiser_options(OptionTable<T>& table, Optimiser optimiser) {
       "newton_tol", [o](T& t) -> double& { return o(t).newton_tolerance; }, real(0),
       "a Newton step whose predicted decrease is below this fraction of the patch energy ends "
       "the steps");
+  table.add(
+      "until", [o](T& t) -> OptimiseOptions::Until& { return o(t).until; },
+      choice<OptimiseOptions::Until>({{"rest", OptimiseOptions::Until::rest},
+                                      {"converged", OptimiseOptions::Until::converged}}),
+      "a patch's Newton steps end at newton_tol, or (rest) once its moved elements all reach "
+      "the worst of the mesh outside the patches");
   table.add(
       "lattice", [o](T& t) -> double& { return o(t).lattice_weight; }, real(0, 1, "[)"),
       "share of the energy's weight on the order 2(p-1) lattice (corners and edges)");
