@@ -24,8 +24,9 @@ constexpr int kNodeMaxHalvings = 20;
 constexpr double kNegligible = 1e-9;  // relative energy drop of a node move that counts
 // Least work (sum over the patches' elements of their node count squared: a p = 5
 // triangle's 441 is about 40 us of Hessian a Newton step) for the patches to be optimised
-// in parallel.
-constexpr double kParallelPatchWork = 4000;
+// in parallel: a fresh process's first thread team can cost 10-40 ms on a 2-core VM
+// (fem/elasticity_assembler.cpp's kParallelWork says how that was measured).
+constexpr double kParallelPatchWork = 30000;
 
 // One patch being optimised on the shared coordinates x (its free nodes are its own).
 class PatchOptimiser {

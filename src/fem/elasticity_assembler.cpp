@@ -262,10 +262,17 @@ ElasticityAssembler::ElasticityAssembler(const Mesh& m, const std::vector<int>& 
     recovery_start_[e + 1] = recovery_start_[e] + Eigen::Index(c) * (r + 1);
   }
   // Threads where the elements' work (sum of n^2: a p = 5 triangle's 441 takes some 15 us
-  // to assemble) is worth starting a team in a fresh process: 20000, some 0.7 ms. On
-  // circles6_nolayer p = 2 (its polish solve just above it) two alternated A/B runs gave
-  // 1.06x and 0.96x: the break-even, within the scatter.
-  constexpr double kParallelWork = 20000;
+  // to assemble) is worth starting a team in a fresh process: 150000, some 5 ms. A fresh
+  // process's first team took 10-40 ms more in one run of three or four on this 2-core VM
+  // (lshape_r02_nolayer p = 4, work 29k: 1.6-2.2 ms or 8.8-24.5 ms threaded, 1.6-3.5 ms
+  // alone; work 73k and 92k: 14 and 40 ms against 5-6 alone), and its spinning worker slowed
+  // the factorisation after it (29k: 2.8-4.3 ms against 1.0-3.2); from 237k on, two threads
+  // won (6-7 against 12-15 ms; 1.36M: 53-69 against 81-110). Medians of 6 alternated fresh
+  // runs, this and the optimiser's kParallelPatchWork raised together: lshape_r02_nolayer
+  // p = 4 16.7 -> 14.3 ms, naca4412_a8_nolayer_fine p = 5 54.5 -> 29.3, star1_bl_1e-3 p = 5
+  // 122 -> 96, naca0012_bl_1e-4 p = 5 143 -> 134, plate_holes_nolayer_coarse p = 5 and
+  // naca0012_voronoi p = 4 the same.
+  constexpr double kParallelWork = 150000;
   double work = 0;
   for (int e = 0; e < en.size(); ++e) work += std::pow(double(en.start[e + 1] - en.start[e]), 2);
   threads_ = work >= kParallelWork
