@@ -17,8 +17,15 @@ namespace {
 
 // Below this a fresh process's thread start costs more than it saves: on issue 16's
 // corpus star4_nolayer_coarse at p = 2 (1 MiB) took 7.2 ms against 6.2; the range is
-// populated by the caller at once instead. Below kSmallest nothing is done.
-constexpr std::size_t kLeast = std::size_t(2) << 20;
+// populated by the caller at once instead. Below kSmallest nothing is done. 10 MiB, not
+// 2: a helper thread's start on this 2-core VM's idle core sometimes took milliseconds
+// (and the destructor waits for it): medians (max) of 8 alternated fresh runs, helper /
+// at once: lshape_r02_nolayer p = 4 (3.4 MB) 13.0 (19.8) / 12.4 (12.8) ms, naca0012_voronoi
+// p = 4 (8.5 MB) 22.9 (31.3) / 20.3 (21.6), circle_voronoi p = 4 18.3 (22.0) / 18.2 (19.2),
+// star4_nolayer_coarse p = 4 18.0 (18.3) / 18.0 (18.6), lshape_r05_voronoi p = 5 21.9 (29.6)
+// / 23.0 (23.6); from 15 MB on the helper was as fast or faster (circles6_nolayer p = 5,
+// star1_bl_1e-3 p = 5).
+constexpr std::size_t kLeast = std::size_t(10) << 20;
 constexpr std::size_t kSmallest = std::size_t(64) << 10;
 constexpr std::size_t kChunk = std::size_t(128) << 10;  // the stop is seen within one
 #if defined(__linux__) && !defined(MADV_POPULATE_WRITE)

@@ -26,8 +26,9 @@
 // MADV_POPULATE_WRITE (older kernels: the first madvise fails and the helper stops),
 // where allocator_tuning.h's thresholds are not in place (tune_allocator() not called,
 // as the CLI and the Python module do at start, or declined: the heap would be trimmed),
-// or for less than 64 KiB. Below 2 MiB no thread is started (its start cost more than it
-// saved: star4_nolayer_coarse p = 2, 1 MiB, 7.2 against 6.2 ms): the range is populated by
+// or for less than 64 KiB. Below 10 MiB no thread is started (its start cost more than it
+// saved: star4_nolayer_coarse p = 2, 1 MiB, 7.2 against 6.2 ms; heap_prefault.cpp has the
+// 2-10 MiB runs): the range is populated by
 // the constructor itself, one madvise for what would be a fault per page (ten small p = 2-3
 // runs of the corpus, alternated fresh processes, medians of 6: 0.93x and 0.97x in two
 // rounds, 19 of 20 faster); on one core a larger range gets nothing.

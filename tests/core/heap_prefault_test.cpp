@@ -36,6 +36,7 @@ long prefault_pages_not_resident(const homesh::HeapPrefault& prefault) {
 TEST_CASE("heap prefault: the grown heap resident, the data written meanwhile intact", "[core]") {
   const homesh::AllocatorTuning& tuning = homesh::tune_allocator();
   CHECK_FALSE(homesh::HeapPrefault(std::size_t(1) << 20).active());  // too small for a thread
+  CHECK_FALSE(homesh::HeapPrefault(std::size_t(8) << 20).active());  // populated at once
   constexpr std::size_t kBytes = std::size_t(24) << 20;
   homesh::HeapPrefault prefault(kBytes);
 #if defined(__GLIBC__) && defined(__linux__)
