@@ -117,14 +117,20 @@ def run_method(target, name, method, timeout):
                     dict(case=name, method=method, status="timeout"))
 
 
-def least_time(run, repeat):
-    """run() `repeat` times (each a row with "status" and "seconds"): the first row, with the
-    least seconds of the runs if all were ok (noise only adds time; the results are the same)."""
-    row = run()
+def least_time(run, repeat, under=float("inf"), first=None):
+    """run() `repeat` times in all (each a row with "status" and "seconds"; `first`, if given,
+    the first run's row): the first row, with the seconds (and stage_seconds, where rows have
+    them) of the fastest ok run if the first was ok (noise only adds time; the results are the
+    same). The repeats stop once the first row is not ok or took `under` seconds or more."""
+    row = run() if first is None else first
     for _ in range(repeat - 1):
+        if row["status"] != "ok" or not row["seconds"] < under:
+            break
         again = run()
-        if row["status"] == "ok" and again["status"] == "ok":
-            row["seconds"] = min(row["seconds"], again["seconds"])
+        if again["status"] == "ok" and again["seconds"] < row["seconds"]:
+            row["seconds"] = again["seconds"]
+            if "stage_seconds" in again:
+                row["stage_seconds"] = again["stage_seconds"]
     return row
 
 

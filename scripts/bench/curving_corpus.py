@@ -373,21 +373,6 @@ def report(csv_path, outdir):
 
 # ---------------------------------------------------------------- main
 
-def least_of(run, res, repeat, under):
-    """The result res of a method's first run, with the least seconds (and stage_seconds) of
-    up to `repeat` runs in all if it was valid ("ok") and took under `under` seconds; a run
-    that is not "ok" ends the repeats (its result stands as the first one's)."""
-    for _ in range(repeat - 1):
-        if res.get("status") != "ok" or not res["seconds"] < under:
-            break
-        again = run()
-        if again.get("status") != "ok":
-            break
-        if again["seconds"] < res["seconds"]:
-            res["seconds"], res["stage_seconds"] = again["seconds"], again["stage_seconds"]
-    return res
-
-
 def reuse(csv_path, other, pattern):
     """Appends to csv_path the rows of `other` whose method matches `pattern`, for the
     (case, p) pairs csv_path has and lacks that method for; the same linear meshes are
@@ -501,8 +486,9 @@ def main(argv=None):
                                     error="not run: timed out at a lower p")
             else:
                 r, res = run_one(c.name, msh, p, m, args.timeout, args.rebuild)
-                res = least_of(lambda: run_one(c.name, msh, p, m, args.timeout, args.rebuild)[1],
-                               res, args.repeat, args.repeat_under)
+                res = corpus.least_time(
+                    lambda: run_one(c.name, msh, p, m, args.timeout, args.rebuild)[1],
+                    args.repeat, args.repeat_under, first=res)
             if res.get("status") == "timeout":
                 timed_out.add(m)
             r = r or rec
