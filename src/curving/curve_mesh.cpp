@@ -7,6 +7,7 @@
 #include "core/raise_order.h"
 #include "curving/interior_blending.h"
 #include "curving/wall_propagation.h"
+#include "curving/wall_turn.h"
 #include "quality/mesh_validity.h"
 
 namespace homesh {
@@ -30,10 +31,17 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   // 15 runs 652 / 572 ms; 512 bytes gained no more, 1024 lost.
   const HeapPrefault prefault(std::min<std::size_t>(
       std::size_t(256) * m.num_elements_2d() * opt.order * opt.order, std::size_t(48) << 20));
+  CurveResult r;
+  // The optimiser's threshold: coarse_threshold where the linear wall is coarse for its
+  // curvature, if that is lower.
+  OptimiseOptions optimiser = opt.optimiser;
+  r.wall_turn = largest_wall_turn(m, curves, opt.boundary.corner_degrees);
+  if (r.wall_turn >= opt.coarse_turn)
+    optimiser.threshold = std::min(optimiser.threshold, opt.coarse_threshold);
+  r.threshold = optimiser.threshold;
   Mesh raised = raise_order(m, opt.order);
   Eigen::Matrix2Xd target = place(raised);
   const std::vector<bool> boundary = boundary_nodes(raised);
-  CurveResult r;
   r.place_seconds = since(start);
   std::vector<int> local_region;  // step 1's poor elements and their rings
   Mesh placed;                    // step 1's best guess, if step 1 ran
@@ -224,7 +232,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     r.guess_over_solve = true;
   }
   r.worst_ratio = r.deform.worst_ratio;
-  if (!(opt.optimise && r.deform.complete && r.deform.worst_ratio < opt.optimiser.threshold)) {
+  if (!(opt.optimise && r.deform.complete && r.deform.worst_ratio < optimiser.threshold)) {
     if (guess_start.complete) {  // better than the solve, and no optimisation to come
       r.deform = std::move(guess_start);
       r.worst_ratio = r.deform.worst_ratio;
@@ -244,11 +252,9 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   auto optimise = [&] {
     const auto t = std::chrono::steady_clock::now();
     // An empty validity (no increment accepted) is bounded afresh by the optimiser.
-    OptimiseResult o =
-        optimise_mesh(r.deform.mesh, none, opt.optimiser, curves, &r.deform.validity);
-    for (int pass = 1; pass < opt.optimise_passes && o.worst_after < opt.optimiser.threshold;
-         ++pass) {
-      OptimiseResult next = optimise_mesh(o.mesh, none, opt.optimiser, curves, &o.validity);
+    OptimiseResult o = optimise_mesh(r.deform.mesh, none, optimiser, curves, &r.deform.validity);
+    for (int pass = 1; pass < opt.optimise_passes && o.worst_after < optimiser.threshold; ++pass) {
+      OptimiseResult next = optimise_mesh(o.mesh, none, optimiser, curves, &o.validity);
       const bool gained = next.worst_after > o.worst_after + kPassGain;
       next.worst_before = o.worst_before;
       next.poor_before = o.poor_before;
@@ -267,7 +273,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   // optimised from there, the better kept. Neither start wins everywhere
   // (ellipse10_bl_1e-4 p = 2 / 3: 0.78 / 0.61 from the held solve, 0.85 / 0.70 from the
   // free one; naca0012_voronoi p = 4: 0.975 from the held one, 0.84 from the free one).
-  if (r.optimisation.worst_after < opt.optimiser.threshold && opt.fixed_vertices && !r.fell_back) {
+  if (r.optimisation.worst_after < optimiser.threshold && opt.fixed_vertices && !r.fell_back) {
     const auto t = std::chrono::steady_clock::now();
     DeformResult freed = deform_mesh(raised, target, boundary, opt.deform);
     r.elastic_seconds += since(t);
@@ -285,7 +291,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
   }
   // The guess beat the solve: optimised from it too, if what the solve gave is still poor
   // or below the guess itself.
-  if (guess_start.complete && (r.optimisation.worst_after < opt.optimiser.threshold ||
+  if (guess_start.complete && (r.optimisation.worst_after < optimiser.threshold ||
                                guess_start.worst_ratio > r.optimisation.worst_after)) {
     std::swap(r.deform, guess_start);
     OptimiseResult o = optimise();

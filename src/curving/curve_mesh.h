@@ -130,6 +130,20 @@ struct CurveOptions {
   /// within 2x 87 -> 95; every target still met, the worst run 0.835 -> 0.842, the mean
   /// 0.9427 -> 0.9367 (51 runs lower by > 0.005, at most circle_nolayer_coarse p = 5
   /// 0.977 -> 0.903, still above Gmsh's best 0.62; 11 higher).
+  /// Where the linear wall is coarse for its curvature, its consecutive boundary lines
+  /// turning by `coarse_turn` degrees or more somewhere it is smooth (curving/wall_turn.h),
+  /// the optimiser's threshold is `coarse_threshold` if that is lower: the bar issue 16
+  /// sets (0.9 where the wall turns by less than 30 degrees, 0.8 elsewhere). There the
+  /// elements round the wall must bend most, and lifting the last of them from 0.8 to 0.9
+  /// cost most of the curving: on issue 16's corpus (196 runs, 140 on such walls; one run
+  /// beside the threshold 0.9 everywhere, its Gmsh times those of docs/bench) within Gmsh's
+  /// fastest valid time 136 / 146 runs against 130, within 2x 146 against 144, the whole
+  /// corpus 22.1 s against 42.1 s (flap_gap01_bl_1e-5 p = 5 3.57 -> 0.22 s, 0.893 -> 0.870;
+  /// plate_holes_nolayer_coarse p = 5 0.935 -> 0.823 at half the time); every target still
+  /// met, worst 0.802 against 0.842, mean 0.8925 against 0.9314 (coarse_threshold 0.85:
+  /// 133, 145, 27.1 s, worst 0.834, mean 0.9128).
+  double coarse_turn = 30;
+  double coarse_threshold = 0.8;  ///< (>= optimiser.threshold: off)
   OptimiseOptions optimiser = [] {
     OptimiseOptions o;
     o.free_vertices = true;
@@ -158,6 +172,8 @@ struct CurveResult {
   bool fell_back_whole = false;   ///< and that on the whole mesh (the region's fell short too)
   double restricted_reached = 0;  ///< the restricted solve's reached fraction, if it fell back
   bool freed_vertices = false;    ///< the result comes from step 3's solve with vertices free
+  double wall_turn = 0;           ///< the linear wall's largest turn, degrees (curving/wall_turn.h)
+  double threshold = 0;           ///< the optimiser's threshold used (see coarse_turn)
   bool optimised = false;         ///< step 3 ran
   OptimiseResult optimisation;    ///< its result (its mesh moved to `mesh`)
   double seconds = 0;             ///< wall time of the whole curving

@@ -205,7 +205,9 @@ def test_a_mixed_mesh_is_curved_and_counted_quadrilaterals_included(session):
     r = homesh.curve(p=2)
     assert r["quadrilaterals"] == quads and r["triangles"] == tris
     v = r["validity"]
-    assert v["quadrilaterals"] == quads and v["invalid"] == 0 and v["worst"] > 0.9  # 0.950
+    # The nose turns the wall's lines by 91 degrees: optimised to coarse_threshold there.
+    assert r["results"]["wall_turn_degrees"] > 90 and r["results"]["threshold"] == 0.8
+    assert v["quadrilaterals"] == quads and v["invalid"] == 0 and v["worst"] > 0.8  # 0.874
     # The worst element by its Gmsh tag: a 6-node triangle (type 9) or 9-node quad (type 10).
     assert v["worst_element"] == v["worst_triangle"]
     assert gmsh.model.mesh.getElement(v["worst_element"])[0] in (9, 10)

@@ -70,7 +70,7 @@ void run(Context& ctx, const CurveOptions& o) {
     ctx.log.info(
         "curve: optimised from the solve with the vertices held, elements stayed below {:g}; "
         "solved again with them free, optimised better from there",
-        o.optimiser.threshold);
+        c.threshold);
   const DeformResult& r = c.deform;
   if (!c.placed && !r.complete)
     throw Error(fmt::format(
@@ -113,10 +113,14 @@ void run(Context& ctx, const CurveOptions& o) {
   if (c.optimised) {
     const OptimiseResult& op = c.optimisation;
     ctx.log.info(
-        "curve: optimised {} patches round {} elements below {:g} ({} kept, {} nodes sliding on "
-        "curves): worst minJ/maxJ {:.4f} -> {:.4f}, {:.2f} s",
-        op.patches, op.poor_before, o.optimiser.threshold, op.accepted, op.sliding_nodes,
-        op.worst_before, op.worst_after, c.optimise_seconds);
+        "curve: optimised {} patches round {} elements below {:g}{} ({} kept, {} nodes sliding "
+        "on curves): worst minJ/maxJ {:.4f} -> {:.4f}, {:.2f} s",
+        op.patches, op.poor_before, c.threshold,
+        c.threshold < o.optimiser.threshold
+            ? fmt::format(" (coarse_threshold: the wall's lines turn by up to {:.0f} degrees)",
+                          c.wall_turn)
+            : std::string(),
+        op.accepted, op.sliding_nodes, op.worst_before, op.worst_after, c.optimise_seconds);
     ctx.results["optimised_patches"] = op.patches;
     ctx.results["optimised_accepted"] = op.accepted;
   }
@@ -126,6 +130,8 @@ void run(Context& ctx, const CurveOptions& o) {
   ctx.results["polished"] = c.polished;
   ctx.results["guess_over_solve"] = c.guess_over_solve;
   ctx.results["optimised"] = c.optimised;
+  ctx.results["wall_turn_degrees"] = c.wall_turn;
+  ctx.results["threshold"] = c.threshold;
   ctx.results["seconds"] = c.seconds;
   ctx.results["place_seconds"] = c.place_seconds;
   ctx.results["guess_seconds"] = c.guess_seconds;
@@ -192,6 +198,13 @@ Stage curve_stage() {
       "patch_rings", [](CurveOptions& o) -> int& { return o.optimiser.layers; }, integer(0, 100),
       "the optimiser's patches: its poor elements grown by this many rings of neighbours");
   add_optimiser_options(t, [](CurveOptions& o) -> OptimiseOptions& { return o.optimiser; });
+  t.add("coarse_turn", &CurveOptions::coarse_turn, real(0, 180),
+        "a wall whose linear lines turn by this many degrees or more where it is smooth "
+        "(inside a curve, or where CAD curves join tangentially) is coarse for its curvature: "
+        "there the optimiser's threshold is `coarse_threshold`");
+  t.add("coarse_threshold", &CurveOptions::coarse_threshold, real(0, 1, "(]"),
+        "the optimiser's threshold on a coarse wall (see coarse_turn), if lower than "
+        "`threshold`");
   t.add(
       "corner", [](CurveOptions& o) -> double& { return o.boundary.corner_degrees; },
       real(0, 180, "()"),
