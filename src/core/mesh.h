@@ -122,6 +122,9 @@ constexpr int kMaxOrder = 10;
 /// Number of nodes of a triangle of order p: (p+1)(p+2)/2.
 constexpr int triangle_node_count(int p) { return (p + 1) * (p + 2) / 2; }
 
+/// Number of nodes of a tetrahedron of order p: (p+1)(p+2)(p+3)/6.
+constexpr int tetrahedron_node_count(int p) { return (p + 1) * (p + 2) * (p + 3) / 6; }
+
 /// Number of nodes of a complete quadrilateral of order p: (p+1)^2.
 constexpr int quad_node_count(int p) { return (p + 1) * (p + 1); }
 
