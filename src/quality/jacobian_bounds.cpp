@@ -10,30 +10,40 @@
 #include "quality/bezier_jacobian.h"
 #include "quality/bezier_quad.h"
 #include "quality/bezier_subdivision.h"
+#include "quality/bezier_tetrahedron.h"
 #include "quality/bezier_triangle.h"
 #include "quality/quad_bezier_jacobian.h"
+#include "quality/tet_bezier_jacobian.h"
 
 namespace homesh {
 namespace {
 
-// What the refinement needs of the domain's shape (triangle or square): the
-// coefficients per domain, which of them are corner values (exact values of
-// the polynomial), and the four-way split.
+// What the refinement needs of the domain's shape (triangle, square or
+// tetrahedron): the coefficients per domain, which of them are corner values
+// (exact values of the polynomial), and the split into `children` domains.
 struct Shape {
   int n;
   std::array<int, 4> corners;
   int num_corners;
+  int children;
   void (*split)(int d, const Eigen::Ref<const Eigen::VectorXd>& c, Eigen::Ref<Eigen::MatrixXd> sub);
 };
 
 Shape triangle(int d) {
   const int n = bezier_size(d);
-  return {n, {0, d, n - 1, 0}, 3, bezier_subdivide};
+  return {n, {0, d, n - 1, 0}, 3, 4, bezier_subdivide};
 }
 
 Shape square(int d) {
   const int n = quad_bezier_size(d, d);
-  return {n, {0, d, n - 1, n - 1 - d}, 4, quad_bezier_subdivide};
+  return {n, {0, d, n - 1, n - 1 - d}, 4, 4, quad_bezier_subdivide};
+}
+
+// Corners: (0,0,0) first, then (d,0,0), (0,d,0) opening the last layer i + j + l = d,
+// (0,0,d) last (quality/bezier_tetrahedron.h).
+Shape tetrahedron(int d) {
+  const int n = tetrahedron_bezier_size(d), last = d > 0 ? tetrahedron_bezier_size(d - 1) : 0;
+  return {n, {0, last, last + d, n - 1}, 4, 8, tetrahedron_bezier_subdivide};
 }
 
 // A sub-domain: its coefficients live at coeffs[offset, offset + n).
@@ -124,10 +134,11 @@ class Refinement {
       const int parent = live_.back().offset;
       live_.pop_back();
       const int first = static_cast<int>(coeffs_.size());
-      coeffs_.resize(coeffs_.size() + 4 * static_cast<std::size_t>(n_));
+      const int children = shape_.children;
+      coeffs_.resize(coeffs_.size() + children * static_cast<std::size_t>(n_));
       shape_.split(d_, Eigen::Map<const Eigen::VectorXd>(coeffs_.data() + parent, n_),
-                   Eigen::Map<Eigen::MatrixXd>(coeffs_.data() + first, n_, 4));
-      for (int s = 0; s < 4; ++s) {
+                   Eigen::Map<Eigen::MatrixXd>(coeffs_.data() + first, n_, children));
+      for (int s = 0; s < children; ++s) {
         const int offset = first + s * n_;
         live_.push_back(bounds_of(coeffs_.data() + offset, offset));
         std::push_heap(live_.begin(), live_.end(), cmp);
@@ -192,6 +203,19 @@ JacobianBounds jacobian_bounds(const JacobianControlPoints& U, const JacobianCon
   Eigen::Map<Eigen::VectorXd> coefficients(c, bezier_size(d));
   jacobian_determinant_bezier(U, V, p, coefficients);
   return bezier_bounds(d, coefficients, opt);
+}
+
+JacobianBounds tetrahedron_bezier_bounds(int d, const Eigen::Ref<const Eigen::VectorXd>& c,
+                                         const BoundsOptions& opt) {
+  if (d < 0 || d > kMaxTetBezierDegree)
+    throw Error("tetrahedron_bezier_bounds: degree " + std::to_string(d) + " out of range 0.." +
+                std::to_string(kMaxTetBezierDegree));
+  return bounds("tetrahedron_bezier_bounds", d, tetrahedron(d), c, opt);
+}
+
+JacobianBounds tetrahedron_jacobian_bounds(const Eigen::Matrix3Xd& X, int p,
+                                           const BoundsOptions& opt) {
+  return tetrahedron_bezier_bounds(3 * (p - 1), tetrahedron_jacobian_bezier(X, p), opt);
 }
 
 double scaled_jacobian_ratio(const JacobianBounds& b) {

@@ -81,6 +81,19 @@ JacobianBounds jacobian_bounds(const Eigen::Matrix2Xd& X, int p, const BoundsOpt
 JacobianBounds jacobian_bounds(const JacobianControlPoints& U, const JacobianControlPoints& V,
                                int p, const BoundsOptions& opt = {});
 
+/// Bounds of the polynomial of degree d <= kMaxTetBezierDegree with Bernstein
+/// coefficients c (quality/bezier_tetrahedron.h) over the reference tetrahedron: the
+/// same refinement, its four corner coefficients the exact values, each domain split
+/// in eight.
+JacobianBounds tetrahedron_bezier_bounds(int d, const Eigen::Ref<const Eigen::VectorXd>& c,
+                                         const BoundsOptions& opt = {});
+
+/// Bounds of det J (= 6 * volume for a straight-sided tetrahedron) of the order-p
+/// tetrahedron with nodes X (3 by (p+1)(p+2)(p+3)/6, Gmsh order), p <= 5
+/// (quality/tet_bezier_jacobian.h). Issue 24: the certificate of 3D meshes.
+JacobianBounds tetrahedron_jacobian_bounds(const Eigen::Matrix3Xd& X, int p,
+                                           const BoundsOptions& opt = {});
+
 /// Gmsh's "minJ/maxJ" (AnalyseMeshQuality plugin) from the bounds
 /// minJ = min_lower and maxJ = max_upper: minJ / maxJ if maxJ > 0, maxJ / minJ
 /// if maxJ < 0 (a wholly inverted element scores as its mirror image), 0 if
