@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "element/reference_nodes.h"
+#include "element/silvester_factors.h"
 
 namespace homesh {
 
@@ -24,16 +25,7 @@ void LagrangeBasis::evaluate(const Eigen::Vector2d& uv, double* N, double* dNdu,
   double R[3][kMaxOrder + 1];
   double dR[3][kMaxOrder + 1];
   const double l[3] = {1.0 - uv(0) - uv(1), uv(0), uv(1)};
-  for (int d = 0; d < 3; ++d) {
-    const double pl = p_ * l[d];
-    R[d][0] = 1.0;
-    dR[d][0] = 0.0;
-    for (int m = 1; m <= p_; ++m) {
-      const double f = (pl - (m - 1)) / m;
-      dR[d][m] = dR[d][m - 1] * f + R[d][m - 1] * (static_cast<double>(p_) / m);
-      R[d][m] = R[d][m - 1] * f;
-    }
-  }
+  for (int d = 0; d < 3; ++d) silvester_factors(p_, l[d], R[d], dR[d]);
   const bool derivatives = dNdu != nullptr || dNdv != nullptr;
   for (int k = 0; k < size(); ++k) {
     const int c = multi_index_(0, k), a = multi_index_(1, k), b = multi_index_(2, k);

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/mesh.h"
+#include "element/silvester_factors.h"
 #include "element/tet_reference_nodes.h"
 
 namespace homesh {
@@ -24,16 +25,7 @@ void TetLagrangeBasis::evaluate(const Eigen::Vector3d& uvw, double* N, double* d
   double R[4][kMaxOrder + 1];
   double dR[4][kMaxOrder + 1];
   const double l[4] = {1.0 - uvw(0) - uvw(1) - uvw(2), uvw(0), uvw(1), uvw(2)};
-  for (int d = 0; d < 4; ++d) {
-    const double pl = p_ * l[d];
-    R[d][0] = 1.0;
-    dR[d][0] = 0.0;
-    for (int m = 1; m <= p_; ++m) {
-      const double f = (pl - (m - 1)) / m;
-      dR[d][m] = dR[d][m - 1] * f + R[d][m - 1] * (static_cast<double>(p_) / m);
-      R[d][m] = R[d][m - 1] * f;
-    }
-  }
+  for (int d = 0; d < 4; ++d) silvester_factors(p_, l[d], R[d], dR[d]);
   for (int k = 0; k < size(); ++k) {
     double r[4], dr[4];
     for (int d = 0; d < 4; ++d) {
