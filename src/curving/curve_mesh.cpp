@@ -79,13 +79,19 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
         for (const int n : element_node_indices(placed, e)) poor_nodes[n] = true;
     return moving_region(placed, poor_nodes, opt.placed_rings);
   };
-  // The polish's bar: `polish`, or none (0) where more than polish_share of the elements are
-  // below it.
+  // The polish's bar: `polish`, or where more than polish_share of the elements are below
+  // it, the ratio below which the polish_share worst lie (polish_worst), else none (0).
   auto polish_bar = [&](const MeshValidity& v) {
     const int n = placed.num_elements_2d();
     int below = 0;
     for (int e = 0; e < n; ++e) below += v.ratio(e) < opt.polish;
-    return below <= opt.polish_share * n ? opt.polish : 0.0;
+    if (below <= opt.polish_share * n) return opt.polish;
+    if (!opt.polish_worst) return 0.0;
+    // The polish_share worst: below the ratio of the element at that rank.
+    std::vector<double> r(v.ratio.data(), v.ratio.data() + n);
+    const auto k = r.begin() + static_cast<std::ptrdiff_t>(opt.polish_share * n);
+    std::nth_element(r.begin(), k, r.end());
+    return *k > v.worst ? *k : 0.0;  // none below it: no polish
   };
 
   // 1. Placed: the boundary nodes at their targets, the interior blended from the wall
@@ -137,6 +143,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
         if (d.complete && d.worst_ratio > v.worst) {
           r.placed = false;
           r.polished = true;
+          r.polish_bar = bar;
           r.worst_ratio = d.worst_ratio;
           r.deform = std::move(d);
           r.mesh = std::move(r.deform.mesh);
@@ -173,6 +180,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
           d.solves += r.deform.solves;
           r.deform = std::move(d);
           r.polished = true;
+          r.polish_bar = bar;
         }
       }
     }

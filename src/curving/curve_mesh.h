@@ -64,6 +64,13 @@ struct CurveOptions {
   /// 0.9605 (share 1) against 0.9546 (0.1). `polish` 0.95 instead (share 1): 44 runs, but
   /// star2_bl_1e-4_fine p = 3 at 0.957 against Gmsh's 0.970.
   double polish_share = 0.1;
+  /// Where more than polish_share of the elements are below `polish`: polish round the
+  /// polish_share worst of them (true), or not at all (false). Off: on issue 16's corpus
+  /// (one run side by side) it polished 10 runs more, for 0.001-0.016, at 1.5-5x their
+  /// time (circles6_bl_1e-3 p = 4 0.028 -> 0.147 s), within Gmsh's fastest valid time 123
+  /// against 127 of 146 runs; on the quad corpus it lifts star1_blq_1e-3 p = 3 from 0.926
+  /// to 0.968, above FastCurving's 0.929 (scripts/bench/README.md).
+  bool polish_worst = false;
   /// > 0: if the blended guess falls short, step 1 also tries moving the interior near
   /// the wall, each node with the nearest wall line's deviation, fading over this many
   /// line lengths (curving/wall_propagation.h), and keeps the better guess. On
@@ -161,6 +168,7 @@ struct CurveResult {
   MeshValidity validity;
   bool placed = false;             ///< step 1 sufficed: no solve, no optimisation
   bool polished = false;           ///< step 1's guess sufficed, then solved round its poorest
+  double polish_bar = 0;           ///< ... round its elements below this
   std::string guess = "straight";  ///< step 1's guess kept: straight, blended or propagated
   double placed_worst = 0;         ///< step 1's worst certified minJ/maxJ (<= 0: invalid)
   DeformResult deform;             ///< of the last solve (if any; its mesh moved to `mesh`

@@ -196,6 +196,21 @@ TEST_CASE("curve: no polish where more than polish_share of the elements are bel
   const double guess =
       logged(r, R"(interior propagated: worst minJ/maxJ (\d\.\d+) >= 0\.9, no solve)");
   CHECK(guess == Approx(0.9622).margin(0.002));
+  // polish_worst: the polish round the worst 1 % instead (below their largest ratio).
+  const auto w = run_homesh(
+      geo +
+      "naca.geo -m mesh "
+      "-m layers:walls=aerofoil:n=15:first=1e-3:ratio=1.2:normals=multi:fan=5:fan_angle=320 "
+      "-m curve:p=4:polish_share=0.01:polish_worst=1");
+  INFO(w.output);
+  std::smatch m;
+  REQUIRE(std::regex_search(w.output, m,
+                            std::regex(R"(solved round its elements below (\d\.\d+) \((\d+) )"
+                                       R"(elements\): worst minJ/maxJ (\d\.\d+))")));
+  const double bar = std::stod(m[1]), polished = std::stod(m[3]);
+  CHECK(bar > guess);
+  CHECK(bar < 0.98);
+  CHECK(polished > guess + 0.01);
 }
 
 // The local solve's result kept below `placed` and optimised (`local`): the plate at a quarter

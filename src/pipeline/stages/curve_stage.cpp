@@ -85,7 +85,7 @@ void run(Context& ctx, const CurveOptions& o) {
         o.order, c.guess,
         c.placed_worst > 0 ? fmt::format("worst minJ/maxJ {:.4f}", c.placed_worst)
                            : std::string("not certified valid"),
-        o.polish,
+        c.polish_bar,
         c.placed_worst < o.accept_placed ? fmt::format(" (first below {:g})", o.accept_placed)
                                          : std::string(),
         r.solved_triangles, r.worst_ratio, c.elastic_seconds);
@@ -189,6 +189,9 @@ Stage curve_stage() {
         "the local solve (`rings`) from this order on");
   t.add("polish_share", &CurveOptions::polish_share, real(0, 1),
         "polish only where at most this share of the elements is below `polish`");
+  t.add("polish_worst", &CurveOptions::polish_worst, boolean(),
+        "where more than polish_share of the elements are below `polish`, polish round the "
+        "polish_share worst of them (0: no polish there)");
   t.add("local", &CurveOptions::accept_local, real(0),
         "the local solve's result (`rings`) is kept, then optimised, if valid with its worst "
         "minJ/maxJ at least this; else the solve within `reach` follows");
