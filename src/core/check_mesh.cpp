@@ -35,18 +35,6 @@ std::string fmt_number(double v) {
   return s.str();
 }
 
-// Twice the signed area of an element, and the square of its longest
-// corner-to-corner side (its scale): of its corners' polygon, and, for a
-// curved element (order p, Gmsh order: the corners, then each edge's p - 1
-// nodes from its first corner to its second, equispaced in the edge's
-// parameter), the larger of that and the boundary integral of x dy - y dx
-// along the edges' polynomials (degree p, the integrand 2p - 1: exact by p
-// Gauss points), which is the integral of det J over the element. So an
-// element is refused as inverted only if both are clockwise: a valid thin
-// element round a leading edge at p = 3 can have its three corners (and even
-// the polygon through all its boundary nodes) clockwise, its edges' chords
-// cutting across it, and homesh certified and wrote it; an element folded
-// inside, its corners counter-clockwise, is left to the certification.
 // The edges' quadrature at order p and its scratch, made once for all elements.
 struct EdgeQuadrature {
   int p;
@@ -61,6 +49,18 @@ struct EdgeQuadrature {
         dL(order + 1) {}
 };
 
+// Twice the signed area of an element, and the square of its longest
+// corner-to-corner side (its scale): of its corners' polygon, and, for a
+// curved element (order p, Gmsh order: the corners, then each edge's p - 1
+// nodes from its first corner to its second, equispaced in the edge's
+// parameter), the larger of that and the boundary integral of x dy - y dx
+// along the edges' polynomials (degree p, the integrand 2p - 1: exact by p
+// Gauss points), which is the integral of det J over the element. So an
+// element is refused as inverted only if both are clockwise: a valid thin
+// element round a leading edge at p = 3 can have its three corners (and even
+// the polygon through all its boundary nodes) clockwise, its edges' chords
+// cutting across it, and homesh certified and wrote it; an element folded
+// inside, its corners counter-clockwise, is left to the certification.
 std::pair<double, double> boundary_area2(const Mesh& m, const Eigen::MatrixXi& nodes, int e,
                                          int corners, EdgeQuadrature& eq) {
   const int p = eq.p;

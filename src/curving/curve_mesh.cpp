@@ -88,9 +88,9 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     if (below <= opt.polish_share * n) return opt.polish;
     if (!opt.polish_worst) return 0.0;
     // The polish_share worst: below the ratio of the element at that rank.
-    std::vector<double> r(v.ratio.data(), v.ratio.data() + n);
-    const auto k = r.begin() + static_cast<std::ptrdiff_t>(opt.polish_share * n);
-    std::nth_element(r.begin(), k, r.end());
+    std::vector<double> ratios(v.ratio.data(), v.ratio.data() + n);
+    const auto k = ratios.begin() + static_cast<std::ptrdiff_t>(opt.polish_share * n);
+    std::nth_element(ratios.begin(), k, ratios.end());
     return *k > v.worst ? *k : 0.0;  // none below it: no polish
   };
 

@@ -38,10 +38,14 @@ TEST_CASE("tetrahedron_jacobian_bounds: det J = 6 volume of a straight tetrahedr
     CHECK(r.valid_certified);
     CHECK(r.subdivisions == 0);
     CHECK(scaled_jacobian_ratio(r) == Approx(1).epsilon(1e-8));
-    // Two corners swapped: the mirror image, det J = -det A.
+    // Its mirror image (x -> -x): det J = -det A, scored as the element itself.
     Eigen::Matrix3Xd Y = X;
-    Y.col(1).swap(Y.col(2));
-    if (p == 1) CHECK(tetrahedron_jacobian_bounds(Y, p).max_upper < 0);
+    Y.row(0) *= -1;
+    const JacobianBounds mirror = tetrahedron_jacobian_bounds(Y, p);
+    CHECK(mirror.max_upper == Approx(-A.determinant()).epsilon(1e-8));
+    CHECK(mirror.min_lower == Approx(-A.determinant()).epsilon(1e-8));
+    CHECK(mirror.invalid_certified);
+    CHECK(scaled_jacobian_ratio(mirror) == Approx(1).epsilon(1e-8));
   }
   CHECK_THROWS_AS(tetrahedron_jacobian_bounds(Eigen::Matrix3Xd::Zero(3, 9), 2), Error);
   CHECK_THROWS_AS(tetrahedron_jacobian_bezier(Eigen::Matrix3Xd::Zero(3, 56), 6), Error);
