@@ -119,6 +119,11 @@ struct Chain {
 
 }  // namespace
 
+bool rebuilt_corner(const Eigen::Vector2d& in, const Eigen::Vector2d& out, bool same_curve,
+                    double corner_degrees) {
+  return !same_curve || in.dot(out) < std::cos(corner_degrees * kPi / 180) * in.norm() * out.norm();
+}
+
 BoundaryReconstruction reconstruct_boundary(const Mesh& m,
                                             const BoundaryReconstructionOptions& opt) {
   if (!(opt.corner_degrees > 0 && opt.corner_degrees < 180))
@@ -132,14 +137,13 @@ BoundaryReconstruction reconstruct_boundary(const Mesh& m,
     for (int e = 0; e < 2; ++e) incident[m.line(e, k)].push_back(k);
   auto other = [&](int k, int v) { return m.line(0, k) == v ? m.line(1, k) : m.line(0, k); };
 
-  const double cos_corner = std::cos(opt.corner_degrees * kPi / 180);
   std::unordered_map<int, bool> is_end;
   for (const auto& [v, lines] : incident) {
     bool end = lines.size() != 2 || m.line_entity[lines[0]] != m.line_entity[lines[1]];
     if (!end) {
       const Eigen::Vector2d in = m.x.col(v) - m.x.col(other(lines[0], v));
       const Eigen::Vector2d outgoing = m.x.col(other(lines[1], v)) - m.x.col(v);
-      end = in.dot(outgoing) < cos_corner * in.norm() * outgoing.norm();
+      end = rebuilt_corner(in, outgoing, true, opt.corner_degrees);
       out.corners += end;
     }
     is_end[v] = end;

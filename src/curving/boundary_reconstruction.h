@@ -51,6 +51,12 @@ struct BoundaryReconstruction {
   int corners = 0;       ///< chain ends that are there only because of their angle
 };
 
+/// Whether the rebuilt boundary keeps a sharp corner at a node where exactly two
+/// boundary lines meet, the wall coming in along `in` and leaving along `out`: the
+/// lines lie on different curves, or they turn by more than corner_degrees.
+bool rebuilt_corner(const Eigen::Vector2d& in, const Eigen::Vector2d& out, bool same_curve,
+                    double corner_degrees);
+
 /// The boundary of m rebuilt as above. m may be of any order; lines of order 1
 /// move no node. Throws homesh::Error for corner_degrees outside (0, 180) or a
 /// boundary line of zero length.

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "curving/boundary_reconstruction.h"
+
 namespace homesh {
 namespace {
 
@@ -50,7 +52,7 @@ double largest_wall_turn(const Mesh& m, const CurveEvaluator* curves, double cor
         smooth = c.dim == 0 && degrees(ta, tb) < kSmoothDegrees;
       }
     } else {
-      smooth = turn < corner_degrees;
+      smooth = !rebuilt_corner(in, out, a == b, corner_degrees);
     }
     if (smooth) largest = std::max(largest, turn);
   }

@@ -18,8 +18,8 @@ namespace homesh {
 ///   on, or a model point where their curves' tangents meet within 1 degree (as the
 ///   corpus, scripts/bench/corpus.py, sees a smooth join);
 /// - else (no CAD: the boundary is rebuilt, curving/boundary_reconstruction.h): any
-///   such node where the lines turn by less than `corner_degrees`, the rebuilt curves'
-///   corners.
+///   such node the rebuilt boundary keeps smooth (rebuilt_corner: both lines on one
+///   curve, turning by at most `corner_degrees`).
 /// 0 if there is none.
 double largest_wall_turn(const Mesh& m, const CurveEvaluator* curves, double corner_degrees);
 

@@ -75,6 +75,13 @@ TEST_CASE("largest_wall_turn without CAD: 360 / n degrees round a circle, corner
   const Eigen::Vector2d d1 = bump.x.col(4) - bump.x.col(3), d2 = bump.x.col(5) - bump.x.col(4);
   CHECK(largest_wall_turn(bump, nullptr, 180) ==
         Approx(std::acos(d1.dot(d2) / (d1.norm() * d2.norm())) * 180 / M_PI).epsilon(1e-12));
+  // The circle's lines from that node on moved to curve 3: the rebuilt boundary keeps a
+  // corner where the curves change (rebuilt_corner), so that turn no longer counts, only
+  // the polygon's 360 / 11 elsewhere.
+  Mesh split = bump;
+  for (int k = 0; k < 11; ++k)
+    if (std::min(split.line(0, k), split.line(1, k)) >= 4) split.line_entity[k] = 3;
+  CHECK(largest_wall_turn(split, nullptr, 180) == Approx(360.0 / 11).epsilon(1e-12));
 }
 
 TEST_CASE("largest_wall_turn with CAD: smooth joins of curves count, corners do not", "[curving]") {
