@@ -39,10 +39,12 @@ using ResultValue = std::variant<bool, int, double>;
 struct Validity {
   int triangles = 0;
   int quadrilaterals = 0;
-  int invalid = 0;         ///< 2D elements (triangles and quadrilaterals) not certified valid
-  double worst = 1;        ///< smallest certified minJ/maxJ, in [-1, 1]
-  int worst_triangle = 0;  ///< the Gmsh element tag of the 2D element of `worst` (a quad too)
-  std::string line;        ///< the CLI's one-line summary ("validity: ...")
+  int tetrahedra = 0;  ///< of a volume mesh (issue 24): then invalid and worst are over them
+  int invalid = 0;     ///< 2D elements (triangles and quadrilaterals) not certified valid
+  double worst = 1;    ///< smallest certified minJ/maxJ, in [-1, 1]
+  int worst_triangle =
+      0;             ///< the Gmsh element tag of the element of `worst` (a quad, a tetrahedron)
+  std::string line;  ///< the CLI's one-line summary ("validity: ...")
 };
 
 /// What a stage did to the current model.
@@ -57,6 +59,7 @@ struct Result {
   int nodes = 0;
   int triangles = 0;
   int quadrilaterals = 0;
+  int tetrahedra = 0;      ///< of a volume mesh (its triangles are those of its surfaces)
   std::vector<int> views;  ///< tags of the Gmsh views the stage added
   Validity validity;       ///< of the mesh after the stage (if has_mesh)
 };

@@ -105,12 +105,17 @@ void mesh_and_send(const std::string& subject, const MeshingLimits& limits, int 
     gmsh::option::setNumber("General.NumThreads", 1);  // no OpenMP pool in a forked child
     gmsh::option::setNumber("Mesh.MaxNumThreads1D", 1);
     gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
+    gmsh::option::setNumber("Mesh.MaxNumThreads3D", 1);
     gmsh::model::mesh::clear();
     gmsh::model::mesh::generate(1);
   });
   check_count(subject, count_elements(1), limits.max_elements, "boundary lines");
   gmsh_call(subject + ": Gmsh's mesher", [] { gmsh::model::mesh::generate(2); });
   check_count(subject, count_elements(2), limits.max_elements, "triangles");
+  if (limits.dim == 3) {
+    gmsh_call(subject + ": Gmsh's mesher", [] { gmsh::model::mesh::generate(3); });
+    check_count(subject, count_elements(3), limits.max_elements, "tetrahedra");
+  }
 
   Writer out(fd);
   gmsh::vectorpair entities;

@@ -12,11 +12,14 @@
 namespace homesh::gmsh_adapter {
 
 struct MeshingLimits {
-  std::size_t max_elements = 0;  ///< boundary lines after 1D, then triangles after 2D
-  ChildLimits child;             ///< memory and wall time of the mesher
+  std::size_t max_elements =
+      0;              ///< boundary lines after 1D, triangles after 2D, tetrahedra after 3D
+  ChildLimits child;  ///< memory and wall time of the mesher
+  /// 2, or 3 for a model with volumes (issue 24): generate(3) after generate(2).
+  int dim = 2;
 };
 
-/// Replaces the current model's mesh by Gmsh's `generate(2)` of it with the
+/// Replaces the current model's mesh by Gmsh's `generate(limits.dim)` of it with the
 /// mesh options already set, run in a child process within `limits`. Throws
 /// homesh::Error naming `subject` (the input) when Gmsh fails, crashes or
 /// exceeds a limit, saying which; the model's mesh is then left as it was.

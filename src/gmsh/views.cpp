@@ -2,22 +2,18 @@
 
 #include <gmsh.h>
 
+#include "gmsh/model_nodes.h"
 #include "gmsh/view_style.h"
 
 namespace homesh::gmsh_adapter {
 namespace {
 
-// Element order of the 2D elements written from `tags` (1 if there are none).
-int triangle_order(const ModelTags& tags, std::size_t num_triangles) {
-  if (num_triangles == 0 || tags.element.empty()) return 1;
+// Gmsh's properties of the element tagged `tag`.
+ElementType type_of(std::size_t tag) {
   int type = 0;
   std::vector<std::size_t> nodes;
-  gmsh::model::mesh::getElement(tags.element.front(), type, nodes);
-  std::string name;
-  int dim = 0, order = 1, num_nodes = 0, num_primary = 0;
-  std::vector<double> local;
-  gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
-  return order;
+  gmsh::model::mesh::getElement(tag, type, nodes);
+  return element_type(type);
 }
 
 }  // namespace
@@ -41,21 +37,23 @@ std::vector<int> add_views(const std::vector<Field>& fields, const ModelTags& ta
       element_tags[k] = first + k;
       data[k] = {f.quality ? 1.0 : 0.0};
     }
-    const int order = triangle_order(tags, triangles);
+    // The nodes of each kind of element (triangles or tetrahedra, quadrilaterals).
+    const std::size_t n = tags.element.size(),
+                      first_quad = static_cast<std::size_t>(tags.triangles);
+    const ElementType kind = n > 0 ? type_of(tags.element.front()) : ElementType{"", 2, 1, 3};
+    const int quad_nodes = first_quad < n ? type_of(tags.element[first_quad]).nodes : 0;
     for (std::size_t e = 0; e < triangles; ++e) {
       const std::size_t index = f.elements.empty() ? e : static_cast<std::size_t>(f.elements[e]);
       element_tags[others + e] = tags.element.at(index);
       // An element's node values are the top rows of its column (core/field.h).
       const auto col = f.values.col(static_cast<Eigen::Index>(e));
-      const bool quad = index >= static_cast<std::size_t>(tags.triangles);
-      const Eigen::Index size = element ? 1
-                                : quad  ? quad_node_count(order)
-                                        : triangle_node_count(order);
+      const bool quad = index >= first_quad;
+      const Eigen::Index size = element ? 1 : quad ? quad_nodes : kind.nodes;
       data[others + e].assign(col.data(), col.data() + size);
     }
     gmsh::view::addModelData(view, 0, model, element ? "ElementData" : "ElementNodeData",
                              element_tags, data);
-    style_view(view, f, order);
+    style_view(view, f, kind.order);
     shown = shown || f.shown;
     view_tags.push_back(view);
   }

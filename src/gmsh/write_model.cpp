@@ -5,33 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 
 #include "core/error.h"
+#include "gmsh/add_model_mesh.h"
 
 namespace homesh::gmsh_adapter {
 namespace {
-
-void ensure_entities(const Mesh& m) {
-  gmsh::vectorpair existing;
-  gmsh::model::getEntities(existing);
-  std::set<std::pair<int, int>> have(existing.begin(), existing.end());
-  std::vector<Entity> missing;
-  for (const Entity& e : m.entities)
-    if (!have.count({e.dim, e.tag})) missing.push_back(e);
-  std::stable_sort(missing.begin(), missing.end(),
-                   [](const Entity& a, const Entity& b) { return a.dim < b.dim; });
-  for (const Entity& e : missing) gmsh::model::addDiscreteEntity(e.dim, e.tag, e.boundary);
-
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
-  std::set<std::pair<int, int>> have_groups(groups.begin(), groups.end());
-  for (const PhysicalGroup& g : m.physicals) {
-    if (have_groups.count({g.dim, g.tag})) continue;
-    gmsh::model::addPhysicalGroup(g.dim, g.entities, g.tag);
-    if (!g.name.empty()) gmsh::model::setPhysicalName(g.dim, g.tag, g.name);
-  }
-}
 
 bool is_cad_curve(int tag) {
   std::string type;
@@ -71,26 +50,11 @@ void add_nodes(const Mesh& m) {
   }
 }
 
-// Adds the columns of `conn` grouped by entity; column k gets tag tag(k).
-template <class Tag>
-void add_elements(int type, const Eigen::MatrixXi& conn, const std::vector<int>& entity, Tag tag) {
-  std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> by_entity;
-  for (Eigen::Index k = 0; k < conn.cols(); ++k) {
-    auto& [tags, nodes] = by_entity[entity[k]];
-    tags.push_back(tag(static_cast<int>(k)));
-    for (Eigen::Index i = 0; i < conn.rows(); ++i)
-      nodes.push_back(static_cast<std::size_t>(conn(i, k)) + 1);
-  }
-  for (const auto& [tag, data] : by_entity) {
-    gmsh::model::mesh::addElementsByType(tag, type, data.first, data.second);
-  }
-}
-
 }  // namespace
 
 ModelTags write_model(const Mesh& m) {
   gmsh::model::mesh::clear();
-  ensure_entities(m);
+  ensure_entities(m.entities, m.physicals);
   add_nodes(m);
 
   ModelTags tags;

@@ -8,14 +8,17 @@
 namespace homesh::gmsh_adapter {
 
 /// Element tags given to the mesh written into the model: point elements get
-/// 1.., lines next, the 2D elements last (Mesh::triangle_tag).
+/// 1.., lines next, the 2D elements last (Mesh::triangle_tag). Of a volume mesh
+/// (gmsh/write_volume_model.h) the tetrahedra come last, after the triangles:
+/// its fields, and so these tags, are over the tetrahedra.
 struct ModelTags {
   std::size_t first_line = 1;
-  /// The tag after the lines': the first 2D element's.
+  /// The first tag of the elements fields are over (2D elements, or tetrahedra).
   std::size_t first_triangle = 1;
-  /// #2D elements tag of each (triangles, then quadrilaterals: core/mesh.h).
+  /// Tag of each element fields are over (triangles, then quadrilaterals:
+  /// core/mesh.h; or tetrahedra).
   std::vector<std::size_t> element;
-  /// Number of triangles (2D element e is a quadrilateral from there on).
+  /// Number of triangles, or of tetrahedra (element e is a quadrilateral from there on).
   int triangles = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -15,7 +16,8 @@ namespace homesh {
 namespace {
 
 constexpr std::uint8_t kVtkLine = 3, kVtkPolyLine = 4, kVtkTriangle = 5, kVtkQuad = 9,
-                       kVtkLagrangeTriangle = 69, kVtkLagrangeQuadrilateral = 70;
+                       kVtkTetra = 10, kVtkLagrangeTriangle = 69, kVtkLagrangeQuadrilateral = 70,
+                       kVtkLagrangeTetrahedron = 71;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Appends `value`'s bytes to `bytes`, least significant first.
@@ -85,13 +87,10 @@ std::string data_array(const std::string& type, const std::string& name, int com
          base64(block) + "</DataArray>\n";
 }
 
-// The field's values over every 2D element: a field of a few elements
-// (Field::elements) gets NaN on the others.
-Eigen::MatrixXd all_elements(const Field& f, const Mesh& m) {
-  const int n = m.num_elements_2d();
-  const Eigen::Index rows = f.kind == Field::Kind::Element ? 1
-                            : m.num_quads() > 0            ? quad_node_count(m.order)
-                                                           : triangle_node_count(m.order);
+// The field's values over `n` elements of `rows` values each: a field of a
+// few elements (Field::elements) gets NaN on the others.
+Eigen::MatrixXd all_elements(const Field& f, int n, Eigen::Index node_rows) {
+  const Eigen::Index rows = f.kind == Field::Kind::Element ? 1 : node_rows;
   const Eigen::Index cols = f.elements.empty() ? n : static_cast<Eigen::Index>(f.elements.size());
   if (f.values.rows() != rows || f.values.cols() != cols)
     throw Error("vtu: field '" + f.name + "' is " + std::to_string(f.values.rows()) + " by " +
@@ -112,9 +111,9 @@ Eigen::MatrixXd all_elements(const Field& f, const Mesh& m) {
 }
 
 // The smallest physical group tag of dimension `dim` holding each entity of that dimension.
-std::map<int, int> physical_of(const Mesh& m, int dim) {
+std::map<int, int> physical_of(const std::vector<PhysicalGroup>& physicals, int dim) {
   std::map<int, int> out;
-  for (const PhysicalGroup& g : m.physicals) {
+  for (const PhysicalGroup& g : physicals) {
     if (g.dim != dim) continue;
     for (int e : g.entities) {
       auto [it, added] = out.emplace(e, g.tag);
@@ -124,75 +123,57 @@ std::map<int, int> physical_of(const Mesh& m, int dim) {
   return out;
 }
 
-}  // namespace
+// Cells of one kind: their Gmsh nodes (columns of conn), the Gmsh node of
+// each VTK node (map), the VTK type, entity (of dimension dim) and Gmsh tag of
+// each. The blocks fields cover come first, numbered on from 0 in order.
+struct CellBlock {
+  const Eigen::MatrixXi* conn;
+  std::vector<int> map;
+  std::uint8_t type;
+  const std::vector<int>* entity;
+  int dim;
+  std::function<std::int64_t(int)> tag;
+  bool fields;
+};
 
-std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
-                     const std::string& provenance, const ElementTags& tags) {
+// The .vtu text of `points` and `blocks`, with `fields` over the cells of the
+// blocks that take fields (node_rows values per element for ElementNode fields).
+std::string unstructured_grid(const Eigen::Matrix3Xd& points, const std::vector<CellBlock>& blocks,
+                              const std::vector<Field>& fields, Eigen::Index node_rows,
+                              const std::vector<PhysicalGroup>& physicals,
+                              const std::string& provenance) {
+  int field_cells = 0, cells = 0;
+  for (const CellBlock& b : blocks) {
+    cells += static_cast<int>(b.conn->cols());
+    if (b.fields) field_cells += static_cast<int>(b.conn->cols());
+  }
   // A field of no element (no poor triangles, say) is left out, as in the .msh.
   std::vector<const Field*> written;
   std::vector<Eigen::MatrixXd> values_of;
   for (const Field& f : fields)
-    if (f.values.cols() > 0 || mesh.num_elements_2d() == 0) {
+    if (f.values.cols() > 0 || field_cells == 0) {
       written.push_back(&f);
-      values_of.push_back(all_elements(f, mesh));
+      values_of.push_back(all_elements(f, field_cells, node_rows));
     }
-  if (!tags.triangles.empty() &&
-      tags.triangles.size() != static_cast<std::size_t>(mesh.num_elements_2d()))
-    throw Error("vtu: " + std::to_string(tags.triangles.size()) + " element tags for " +
-                std::to_string(mesh.num_elements_2d()) + " elements");
-  if (!tags.lines.empty() && tags.lines.size() != static_cast<std::size_t>(mesh.num_lines()))
-    throw Error("vtu: " + std::to_string(tags.lines.size()) + " line tags for " +
-                std::to_string(mesh.num_lines()) + " lines");
-  const int p = mesh.order;
-  const int triangles = mesh.num_triangles(), quads = mesh.num_quads(), lines = mesh.num_lines();
-  const int elements = triangles + quads;
-  const std::vector<int> tri_map = gmsh_to_vtk_triangle(p), line_map = line_nodes_along(p);
-  const std::vector<int> quad_map = gmsh_to_vtk_quad(p);
 
-  std::string points, connectivity, offsets, types;
-  for (int i = 0; i < mesh.num_nodes(); ++i) {
-    put(points, mesh.x(0, i));
-    put(points, mesh.x(1, i));
-    put(points, 0.0);
-  }
+  std::string xyz, connectivity, offsets, types, element, geometrical, physical;
+  for (Eigen::Index i = 0; i < points.cols(); ++i)
+    for (int d = 0; d < 3; ++d) put(xyz, points(d, i));
   std::int64_t end = 0;
-  for (int e = 0; e < triangles; ++e) {
-    for (int g : tri_map) put<std::int64_t>(connectivity, mesh.tri(g, e));
-    put(offsets, end += static_cast<std::int64_t>(tri_map.size()));
-    put(types, p == 1 ? kVtkTriangle : kVtkLagrangeTriangle);
-  }
-  for (int q = 0; q < quads; ++q) {
-    for (int g : quad_map) put<std::int64_t>(connectivity, mesh.quad(g, q));
-    put(offsets, end += static_cast<std::int64_t>(quad_map.size()));
-    put(types, p == 1 ? kVtkQuad : kVtkLagrangeQuadrilateral);
-  }
-  for (int l = 0; l < lines; ++l) {
-    for (int g : line_map) put<std::int64_t>(connectivity, mesh.line(g, l));
-    put(offsets, end += static_cast<std::int64_t>(line_map.size()));
-    put(types, p == 1 ? kVtkLine : kVtkPolyLine);
-  }
-
-  std::string element, geometrical, physical;
-  const std::map<int, int> surface_group = physical_of(mesh, 2), curve_group = physical_of(mesh, 1);
-  const auto group = [](const std::map<int, int>& groups, int entity) {
-    const auto it = groups.find(entity);
-    return it == groups.end() ? 0 : it->second;
-  };
-  const auto first_line_tag = 1 + mesh.point_node.size();
-  for (int e = 0; e < elements; ++e) {
-    const auto k = static_cast<std::size_t>(e);
-    const int entity = e < triangles ? mesh.tri_entity[k] : mesh.quad_entity[k - triangles];
-    put(element, static_cast<std::int64_t>(tags.triangles.empty() ? mesh.triangle_tag(e)
-                                                                  : tags.triangles[k]));
-    put<std::int32_t>(geometrical, entity);
-    put<std::int32_t>(physical, group(surface_group, entity));
-  }
-  for (int l = 0; l < lines; ++l) {
-    const auto k = static_cast<std::size_t>(l);
-    put(element,
-        static_cast<std::int64_t>(tags.lines.empty() ? first_line_tag + k : tags.lines[k]));
-    put<std::int32_t>(geometrical, mesh.line_entity[k]);
-    put<std::int32_t>(physical, group(curve_group, mesh.line_entity[k]));
+  std::map<int, std::map<int, int>> groups;  // by dimension
+  for (const CellBlock& b : blocks) {
+    if (!groups.count(b.dim)) groups[b.dim] = physical_of(physicals, b.dim);
+    const std::map<int, int>& group = groups[b.dim];
+    for (Eigen::Index e = 0; e < b.conn->cols(); ++e) {
+      for (int g : b.map) put<std::int64_t>(connectivity, (*b.conn)(g, e));
+      put(offsets, end += static_cast<std::int64_t>(b.map.size()));
+      put(types, b.type);
+      const int entity = (*b.entity)[static_cast<std::size_t>(e)];
+      put(element, b.tag(static_cast<int>(e)));
+      put<std::int32_t>(geometrical, entity);
+      const auto it = group.find(entity);
+      put<std::int32_t>(physical, it == group.end() ? 0 : it->second);
+    }
   }
 
   std::string cell_data = data_array("Int64", "gmsh:element", 1, element) +
@@ -203,28 +184,29 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
     const Field& f = *written[i];
     const Eigen::MatrixXd& v = values_of[i];
     std::string values;
-    const auto components = static_cast<int>(v.rows());
+    const auto components = static_cast<std::size_t>(v.rows());
     const bool element_field = f.kind == Field::Kind::Element;
-    const std::vector<int> tri_order = element_field ? std::vector<int>{0} : tri_map;
-    const std::vector<int> quad_order = element_field ? std::vector<int>{0} : quad_map;
-    for (int e = 0; e < elements; ++e) {
-      const std::vector<int>& order = e < triangles ? tri_order : quad_order;
-      for (int k : order) put(values, v(k, e));
-      for (auto k = order.size(); k < static_cast<std::size_t>(components); ++k) put(values, kNaN);
-    }
-    for (int l = 0; l < lines * components; ++l) put(values, kNaN);
-    cell_data += data_array("Float64", f.name, components, values);
-    if (!element_field) {
-      std::vector<double> at_point(static_cast<std::size_t>(mesh.num_nodes()), kNaN);
-      for (int e = 0; e < elements; ++e) {
-        const bool quad = e >= triangles;
-        const int nodes = static_cast<int>(quad ? quad_map.size() : tri_map.size());
-        for (int k = 0; k < nodes; ++k) {
-          const int node = quad ? mesh.quad(k, e - triangles) : mesh.tri(k, e);
-          double& x = at_point[static_cast<std::size_t>(node)];
-          x = std::fmin(x, v(k, e));
+    std::vector<double> at_point(static_cast<std::size_t>(points.cols()), kNaN);
+    int e = 0;
+    for (const CellBlock& b : blocks) {
+      if (!b.fields) {
+        for (std::size_t k = 0; k < b.conn->cols() * components; ++k) put(values, kNaN);
+        continue;
+      }
+      for (Eigen::Index c = 0; c < b.conn->cols(); ++c, ++e) {
+        const std::vector<int> order = element_field ? std::vector<int>{0} : b.map;
+        for (int k : order) put(values, v(k, e));
+        for (auto k = order.size(); k < components; ++k) put(values, kNaN);
+        if (element_field) continue;
+        for (std::size_t k = 0; k < b.map.size(); ++k) {
+          double& x =
+              at_point[static_cast<std::size_t>((*b.conn)(static_cast<Eigen::Index>(k), c))];
+          x = std::fmin(x, v(static_cast<Eigen::Index>(k), e));
         }
       }
+    }
+    cell_data += data_array("Float64", f.name, static_cast<int>(components), values);
+    if (!element_field) {
       std::string bytes;
       for (double x : at_point) put(bytes, x);
       point_data += data_array("Float64", point_field_name(f.name), 1, bytes);
@@ -234,9 +216,9 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
   std::string out = "<?xml version=\"1.0\"?>\n" + xml_comment(provenance);
   out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" ";
   out += "header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
-  out += "    <Piece NumberOfPoints=\"" + std::to_string(mesh.num_nodes()) + "\" NumberOfCells=\"" +
-         std::to_string(elements + lines) + "\">\n";
-  out += "      <Points>\n" + data_array("Float64", "Points", 3, points) + "      </Points>\n";
+  out += "    <Piece NumberOfPoints=\"" + std::to_string(points.cols()) + "\" NumberOfCells=\"" +
+         std::to_string(cells) + "\">\n";
+  out += "      <Points>\n" + data_array("Float64", "Points", 3, xyz) + "      </Points>\n";
   out += "      <Cells>\n" + data_array("Int64", "connectivity", 1, connectivity) +
          data_array("Int64", "offsets", 1, offsets) + data_array("UInt8", "types", 1, types) +
          "      </Cells>\n";
@@ -246,15 +228,83 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
   return out;
 }
 
-void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<Field>& fields,
-               const std::string& provenance, const ElementTags& tags) {
+// Writes `text` to `path` atomically, an Error making it naming `path`.
+template <class Text>
+void write_text(const std::string& path, Text text_of) {
   std::string text;
   try {
-    text = vtu_text(mesh, fields, provenance, tags);
+    text = text_of();
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }
   write_file_atomically(path, text);
+}
+
+}  // namespace
+
+std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
+                     const std::string& provenance, const ElementTags& tags) {
+  if (!tags.triangles.empty() &&
+      tags.triangles.size() != static_cast<std::size_t>(mesh.num_elements_2d()))
+    throw Error("vtu: " + std::to_string(tags.triangles.size()) + " element tags for " +
+                std::to_string(mesh.num_elements_2d()) + " elements");
+  if (!tags.lines.empty() && tags.lines.size() != static_cast<std::size_t>(mesh.num_lines()))
+    throw Error("vtu: " + std::to_string(tags.lines.size()) + " line tags for " +
+                std::to_string(mesh.num_lines()) + " lines");
+  const int p = mesh.order, triangles = mesh.num_triangles();
+  Eigen::Matrix3Xd points = Eigen::Matrix3Xd::Zero(3, mesh.num_nodes());
+  points.topRows<2>() = mesh.x;
+  const auto first_line_tag = static_cast<std::int64_t>(1 + mesh.point_node.size());
+  const std::vector<CellBlock> blocks = {
+      {&mesh.tri, gmsh_to_vtk_triangle(p), p == 1 ? kVtkTriangle : kVtkLagrangeTriangle,
+       &mesh.tri_entity, 2,
+       [&](int e) {
+         return static_cast<std::int64_t>(tags.triangles.empty() ? mesh.triangle_tag(e)
+                                                                 : tags.triangles[e]);
+       },
+       true},
+      {&mesh.quad, gmsh_to_vtk_quad(p), p == 1 ? kVtkQuad : kVtkLagrangeQuadrilateral,
+       &mesh.quad_entity, 2,
+       [&](int q) {
+         return static_cast<std::int64_t>(tags.triangles.empty() ? mesh.quad_tag(q)
+                                                                 : tags.triangles[triangles + q]);
+       },
+       true},
+      {&mesh.line, line_nodes_along(p), p == 1 ? kVtkLine : kVtkPolyLine, &mesh.line_entity, 1,
+       [&](int l) {
+         return tags.lines.empty() ? first_line_tag + l : static_cast<std::int64_t>(tags.lines[l]);
+       },
+       false}};
+  const Eigen::Index rows =
+      mesh.num_quads() > 0 ? quad_node_count(mesh.order) : triangle_node_count(mesh.order);
+  return unstructured_grid(points, blocks, fields, rows, mesh.physicals, provenance);
+}
+
+std::string vtu_text(const VolumeMesh& mesh, const std::vector<Field>& fields,
+                     const std::string& provenance) {
+  const int p = mesh.order;
+  const auto first_line_tag = static_cast<std::int64_t>(1 + mesh.point_node.size());
+  const auto first_triangle_tag = first_line_tag + mesh.num_lines();
+  const std::vector<CellBlock> blocks = {
+      {&mesh.tet, gmsh_to_vtk_tetrahedron(p), p == 1 ? kVtkTetra : kVtkLagrangeTetrahedron,
+       &mesh.tet_entity, 3,
+       [&](int e) { return static_cast<std::int64_t>(mesh.tetrahedron_tag(e)); }, true},
+      {&mesh.tri, gmsh_to_vtk_triangle(p), p == 1 ? kVtkTriangle : kVtkLagrangeTriangle,
+       &mesh.tri_entity, 2, [&](int e) { return first_triangle_tag + e; }, false},
+      {&mesh.line, line_nodes_along(p), p == 1 ? kVtkLine : kVtkPolyLine, &mesh.line_entity, 1,
+       [&](int l) { return first_line_tag + l; }, false}};
+  return unstructured_grid(mesh.x, blocks, fields, tetrahedron_node_count(p), mesh.physicals,
+                           provenance);
+}
+
+void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<Field>& fields,
+               const std::string& provenance, const ElementTags& tags) {
+  write_text(path, [&] { return vtu_text(mesh, fields, provenance, tags); });
+}
+
+void write_vtu(const std::string& path, const VolumeMesh& mesh, const std::vector<Field>& fields,
+               const std::string& provenance) {
+  write_text(path, [&] { return vtu_text(mesh, fields, provenance); });
 }
 
 }  // namespace homesh

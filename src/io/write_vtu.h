@@ -43,6 +43,7 @@
 
 #include "core/field.h"
 #include "core/mesh.h"
+#include "core/volume_mesh.h"
 
 namespace homesh {
 
@@ -71,5 +72,19 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
 /// `path` and the cause, the previous file then untouched.
 void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<Field>& fields,
                const std::string& provenance, const ElementTags& tags = {});
+
+/// The `.vtu` text of a volume mesh (issue 24): as above, with the tetrahedra
+/// first (VTK_TETRA (10), or VTK_LAGRANGE_TETRAHEDRON (71) of order p >= 2 in
+/// VTK's node order, io/vtk_node_order.h), then the surface triangles and the
+/// curve lines. Fields are over the tetrahedra (NaN on the triangles and lines);
+/// "gmsh:element" holds the tags of VolumeMesh::tetrahedron_tag and those
+/// write_volume_model gives the triangles and lines; "gmsh:physical" the groups
+/// of each cell's dimension.
+std::string vtu_text(const VolumeMesh& mesh, const std::vector<Field>& fields,
+                     const std::string& provenance);
+
+/// Writes vtu_text(mesh, fields, provenance) of a volume mesh to `path` atomically.
+void write_vtu(const std::string& path, const VolumeMesh& mesh, const std::vector<Field>& fields,
+               const std::string& provenance);
 
 }  // namespace homesh

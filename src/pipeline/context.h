@@ -11,6 +11,7 @@
 
 #include "core/field.h"
 #include "core/mesh.h"
+#include "core/volume_mesh.h"
 #include "pipeline/log.h"
 #include "quality/mesh_validity.h"
 
@@ -22,6 +23,9 @@ struct Context {
   std::string input;
   bool has_cad = false;
   std::optional<Mesh> mesh;
+  /// A volume mesh (tetrahedra, issue 24), read instead of `mesh` from a model
+  /// with 3D elements; the fields are then over its tetrahedra.
+  std::optional<VolumeMesh> volume;
   std::vector<Field> fields;
   /// Named results the last stage reports (e.g. rotate's theta_max): counts
   /// as int, flags as bool, measurements as double.
@@ -57,6 +61,9 @@ struct Context {
 
   /// The mesh, or homesh::Error telling `stage` needs one.
   Mesh& require_mesh(const std::string& stage);
+
+  /// The volume mesh, or homesh::Error telling `stage` needs one.
+  VolumeMesh& require_volume(const std::string& stage);
 
   /// homesh::Error telling `stage` needs CAD geometry to mesh, unless the input has it.
   void require_cad(const std::string& stage) const;

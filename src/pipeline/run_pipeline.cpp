@@ -21,15 +21,18 @@
 #include "gmsh/msh_header.h"
 #include "gmsh/read_in_child.h"
 #include "gmsh/read_model.h"
+#include "gmsh/read_volume_model.h"
 #include "gmsh/views.h"
 #include "gmsh/write_model.h"
 #include "gmsh/write_msh.h"
+#include "gmsh/write_volume_model.h"
 #include "io/write_vtu.h"
 #include "pipeline/group_context_by_entity.h"
 #include "pipeline/output_format.h"
 #include "pipeline/quality_report.h"
 #include "pipeline/stage_registry.h"
 #include "quality/mesh_validity.h"
+#include "quality/volume_validity.h"
 
 namespace homesh {
 namespace {
@@ -115,7 +118,9 @@ void load_input(const std::string& path, Context& ctx) {
     if (ext == "msh") check_nothing_dropped(path);
     ctx.has_cad = gmsh_adapter::model_has_cad();
     if (ctx.has_cad) check_model_extent(path);
-    if (gmsh_adapter::model_has_mesh()) {
+    if (gmsh_adapter::model_has_volume_mesh()) {
+      ctx.volume = gmsh_adapter::read_volume_model(path);
+    } else if (gmsh_adapter::model_has_mesh()) {
       ctx.mesh = gmsh_adapter::read_model(path);
       group_by_entity(*ctx.mesh);  // as after every stage: elements tagged in file order
     } else if (ext == "msh") {
@@ -141,7 +146,7 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
   }
   const bool meshes = std::any_of(plan.begin(), plan.end(),
                                   [](const auto& step) { return step.first->creates_mesh; });
-  if (!ctx.mesh && !meshes) {
+  if (!ctx.mesh && !ctx.volume && !meshes) {
     ctx.log.info("{} has no mesh: meshing it with the mesh stage's defaults", ctx.input);
     const Stage& m = stage("mesh");
     run_stage(m, ctx, m.parse({}));
@@ -156,7 +161,45 @@ void run_stages(const std::vector<StageCall>& calls, Context& ctx) {
   }
 }
 
+namespace {
+
+// write_output of a volume mesh (issue 24).
+void write_volume_output(const std::string& path, const std::string& provenance, Context& ctx) {
+  const VolumeMesh& m = *ctx.volume;
+  const OutputFormat format = check_output_path(path);
+  // Every output carries its certified validity; an invalid mesh is never written silently.
+  const MeshValidity v = volume_validity(m);
+  if (std::none_of(ctx.fields.begin(), ctx.fields.end(),
+                   [](const Field& f) { return f.name == kValidityFieldName; })) {
+    ctx.log.info("{}", validity_line(m, v));
+    ctx.set_field({kValidityFieldName, Field::Kind::Element, v.ratio.transpose(), true, true});
+  }
+  if (v.invalid > 0 && !ctx.keep_invalid)
+    throw Error(path + ": not written: " + std::to_string(v.invalid) +
+                " tetrahedra are not certified valid (keep them with --keep-invalid)");
+  if (v.invalid > 0) ctx.log.warn("{}: writing {} invalid tetrahedra as asked", path, v.invalid);
+
+  std::string record = provenance;
+  for (const std::string& note : ctx.notes) record += "\n" + note;
+  if (format == OutputFormat::vtu) {
+    write_vtu(path, m, ctx.fields, record);
+    ctx.log.info("wrote {} (order {}, {} tetrahedra, {} fields)", path, m.order, m.num_tetrahedra(),
+                 ctx.fields.size());
+    return;
+  }
+  std::vector<int> views;
+  gmsh_adapter::gmsh_call("writing " + path, [&] {
+    views = gmsh_adapter::add_views(ctx.fields, gmsh_adapter::write_volume_model(m));
+  });
+  gmsh_adapter::write_msh(path, views, record);
+  ctx.log.info("wrote {} (order {}, {} tetrahedra, {} triangles, {} views)", path, m.order,
+               m.num_tetrahedra(), m.num_triangles(), views.size());
+}
+
+}  // namespace
+
 void write_output(const std::string& path, const std::string& provenance, Context& ctx) {
+  if (ctx.volume) return write_volume_output(path, provenance, ctx);
   const Mesh& m = ctx.require_mesh("output");
   const OutputFormat format = check_output_path(path);
   // Every output carries its certified validity; an invalid mesh is never written silently.

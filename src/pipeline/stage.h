@@ -32,12 +32,20 @@ struct Stage {
   /// The stage works on meshes holding quadrilaterals; run_stage refuses
   /// such a mesh to every other stage, so none drops or mangles them silently.
   bool handles_quads = false;
+  /// The stage works on volume meshes (tetrahedra, issue 24); run_stage
+  /// refuses one to every other stage.
+  bool handles_volumes = false;
 };
 
 /// Runs stage s on ctx with options made by s.parse. Throws homesh::Error
 /// naming the stage and the element type, before the stage does anything, if
-/// ctx's mesh holds quadrilaterals and s does not handle them.
+/// ctx's mesh holds quadrilaterals and s does not handle them, or ctx holds a
+/// volume mesh and s does not handle one.
 inline void run_stage(const Stage& s, Context& ctx, const std::any& options) {
+  if (!s.handles_volumes && ctx.volume)
+    throw Error("stage '" + s.name + "' does not handle tetrahedra yet (mesh has " +
+                std::to_string(ctx.volume->num_tetrahedra()) + " '" +
+                tetrahedron_type_name(ctx.volume->order) + "')");
   if (!s.handles_quads && ctx.mesh && ctx.mesh->num_quads() > 0)
     throw Error("stage '" + s.name + "' does not handle quadrilaterals yet (mesh has " +
                 std::to_string(ctx.mesh->num_quads()) + " '" + quad_type_name(ctx.mesh->order) +
@@ -53,7 +61,7 @@ struct NoOptions {};
 template <class T>
 Stage make_stage(std::string name, std::string summary, const OptionTable<T>& table,
                  void (*run)(Context&, const T&), bool creates_mesh = false,
-                 bool handles_quads = false) {
+                 bool handles_quads = false, bool handles_volumes = false) {
   Stage s;
   s.name = name;
   s.summary = std::move(summary);
@@ -66,6 +74,7 @@ Stage make_stage(std::string name, std::string summary, const OptionTable<T>& ta
   };
   s.creates_mesh = creates_mesh;
   s.handles_quads = handles_quads;
+  s.handles_volumes = handles_volumes;
   return s;
 }
 

@@ -33,8 +33,8 @@ py::dict validity_dict(const api::Validity& v) {
   // worst_element: the worst 2D element's Gmsh tag (a triangle or a quadrilateral);
   // worst_triangle, its older name, stays for scripts written before quadrilaterals.
   return py::dict(py::arg("triangles") = v.triangles, py::arg("quadrilaterals") = v.quadrilaterals,
-                  py::arg("invalid") = v.invalid, py::arg("worst") = v.worst,
-                  py::arg("worst_element") = v.worst_triangle,
+                  py::arg("tetrahedra") = v.tetrahedra, py::arg("invalid") = v.invalid,
+                  py::arg("worst") = v.worst, py::arg("worst_element") = v.worst_triangle,
                   py::arg("worst_triangle") = v.worst_triangle, py::arg("line") = v.line);
 }
 
@@ -50,6 +50,7 @@ py::dict run_stage(const std::string& name, const py::kwargs& kwargs) {
   result["nodes"] = r.nodes;
   result["triangles"] = r.triangles;
   result["quadrilaterals"] = r.quadrilaterals;
+  result["tetrahedra"] = r.tetrahedra;
   result["views"] = r.views;
   result["validity"] = validity_dict(r.validity);
   return result;

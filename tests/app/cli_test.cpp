@@ -170,7 +170,8 @@ TEST_CASE("meshes homesh cannot take are refused with the reason", "[app]") {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {msh22(dir, "quad", {"3 1 4 3 2"}), "quadrilateral 1 at (0.5, 0.5) is inverted"},
       {msh22(dir, "quad8", {"16 1 2 3 4 1 2 3 4"}), "type 'Quadrilateral 8' (Gmsh type 16)"},
-      {msh22(dir, "tet", {"2 1 2 3", "4 1 2 3 5"}), "has 3D elements"},
+      {msh22(dir, "pyramid", {"2 1 2 3", "7 1 2 3 4 5"}), "type 'Pyramid 5' (Gmsh type 7)"},
+      {msh22(dir, "flat_tet", {"4 1 2 3 3"}), "tetrahedron 1 repeats a corner node"},
       {msh22(dir, "inverted", {"2 1 2 3", "2 1 4 3"}),
        "triangle 2 at (0.333333, 0.666667) is inverted"},
       {msh22(dir, "duplicate", {"2 1 2 3", "2 2 3 1"}), "duplicates another triangle"},

@@ -12,6 +12,7 @@
 #include "gmsh/gmsh_call.h"
 #include "gmsh/option_scope.h"
 #include "gmsh/read_model.h"
+#include "gmsh/read_volume_model.h"
 
 namespace homesh {
 namespace {
@@ -21,8 +22,25 @@ namespace {
 const std::vector<std::pair<std::string, int>> kAlgorithms = {
     {"model", 0}, {"meshadapt", 1}, {"auto", 2}, {"delaunay", 5}, {"frontal", 6}, {"bamg", 7}};
 
+// True if the current model has volumes: the mesh stage then makes tetrahedra.
+bool model_has_volumes() {
+  gmsh::vectorpair volumes;
+  gmsh::model::getEntities(volumes, 3);
+  return !volumes.empty();
+}
+
 void run(Context& ctx, const MeshOptions& o) {
   ctx.require_cad("mesh");
+  if (model_has_volumes()) {
+    ctx.mesh.reset();
+    ctx.volume = gmsh_volume_mesh(ctx.input, o);
+    ctx.fields.clear();
+    ctx.log.info("mesh: {} nodes, {} tetrahedra, {} surface triangles, {} lines",
+                 ctx.volume->num_nodes(), ctx.volume->num_tetrahedra(), ctx.volume->num_triangles(),
+                 ctx.volume->num_lines());
+    return;
+  }
+  ctx.volume.reset();
   ctx.mesh = gmsh_mesh(ctx.input, o);
   ctx.fields.clear();
   ctx.log.info(
@@ -32,9 +50,8 @@ void run(Context& ctx, const MeshOptions& o) {
       ctx.mesh->num_lines());
 }
 
-}  // namespace
-
-Mesh gmsh_mesh(const std::string& input, const MeshOptions& o) {
+// Runs Gmsh's mesher on the current model with o's options, to dimension `dim`.
+void generate(const std::string& input, const MeshOptions& o, int dim) {
   // The user's Gmsh options come back when the mesh is read: a script that
   // calls homesh.mesh(factor=0.5) and then Gmsh's own generate gets its own.
   gmsh_adapter::OptionScope options;
@@ -49,8 +66,20 @@ Mesh gmsh_mesh(const std::string& input, const MeshOptions& o) {
   gmsh_adapter::generate_in_child(
       input, {static_cast<std::size_t>(o.max_triangles),
               {gmsh_adapter::default_memory_cap(),
-               std::chrono::seconds(static_cast<long>(std::ceil(o.max_seconds)))}});
+               std::chrono::seconds(static_cast<long>(std::ceil(o.max_seconds)))},
+              dim});
+}
+
+}  // namespace
+
+Mesh gmsh_mesh(const std::string& input, const MeshOptions& o) {
+  generate(input, o, 2);
   return gmsh_adapter::read_model(input);
+}
+
+VolumeMesh gmsh_volume_mesh(const std::string& input, const MeshOptions& o) {
+  generate(input, o, 3);
+  return gmsh_adapter::read_volume_model(input);
 }
 
 Stage mesh_stage() {
@@ -68,15 +97,17 @@ Stage mesh_stage() {
             " (model: the model's Mesh.Algorithm, as its .geo or script set it; "
             "Gmsh's default is frontal)");
   t.add("max_triangles", &MeshOptions::max_triangles, real(1, 1e12),
-        "error if Gmsh makes more boundary lines or triangles than this");
+        "error if Gmsh makes more boundary lines, triangles or tetrahedra than this");
   t.add("max_seconds", &MeshOptions::max_seconds, real(1, 1e7),
         "error if Gmsh's meshing takes longer (wall seconds)");
   t.check([](const MeshOptions& o) {
     return o.size_max > 0 && o.size_min > o.size_max ? "need size_min <= size_max (0 = unset)" : "";
   });
   return make_stage<MeshOptions>(
-      "mesh", "new linear triangle mesh of the input's CAD by Gmsh (replaces any mesh)", t, run,
-      true, true);
+      "mesh",
+      "new linear mesh of the input's CAD by Gmsh (replaces any mesh): triangles, or tetrahedra "
+      "if it has volumes",
+      t, run, true, true, true);
 }
 
 }  // namespace homesh

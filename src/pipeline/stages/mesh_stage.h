@@ -21,7 +21,12 @@ struct MeshOptions {
 /// a child process within o's caps, then put in the model), read back.
 Mesh gmsh_mesh(const std::string& input, const MeshOptions& o);
 
-/// `mesh`: a new linear triangle mesh of the input's CAD by Gmsh.
+/// Gmsh's linear tetrahedral mesh of the current model's volumes (issue 24),
+/// made as gmsh_mesh makes triangles, read back with its surfaces and curves.
+VolumeMesh gmsh_volume_mesh(const std::string& input, const MeshOptions& o);
+
+/// `mesh`: a new linear triangle (or, of a model with volumes, tetrahedral) mesh of the input's CAD
+/// by Gmsh.
 Stage mesh_stage();
 
 }  // namespace homesh

@@ -1,11 +1,20 @@
 #include "pipeline/stages/order_stage.h"
 
 #include "core/raise_order.h"
+#include "core/raise_volume_order.h"
 
 namespace homesh {
 namespace {
 
 void run(Context& ctx, const OrderOptions& o) {
+  if (ctx.volume) {
+    VolumeMesh& v = *ctx.volume;
+    v = raise_volume_order(v, o.order);
+    ctx.fields.clear();
+    ctx.log.info("order: p = {}, {} nodes, {} tetrahedra, {} triangles", o.order, v.num_nodes(),
+                 v.num_tetrahedra(), v.num_triangles());
+    return;
+  }
   Mesh& m = ctx.require_mesh("order");
   m = raise_order(m, o.order);
   ctx.fields.clear();
@@ -21,7 +30,7 @@ Stage order_stage() {
         "element order, 1 to " + std::to_string(kMaxOrder));
   return make_stage<OrderOptions>(
       "order", "raise (or lower) the mesh to order p with straight-sided elements", t, run,
-      /*creates_mesh=*/false, /*handles_quads=*/true);
+      /*creates_mesh=*/false, /*handles_quads=*/true, /*handles_volumes=*/true);
 }
 
 }  // namespace homesh

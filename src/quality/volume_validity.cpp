@@ -1,0 +1,46 @@
+#include "quality/volume_validity.h"
+
+#include <omp.h>
+
+#include "core/error.h"
+
+namespace homesh {
+
+MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt, int threads) {
+  if (m.order > kMaxTetrahedronOrder)
+    throw Error("certified validity of tetrahedra: order " + std::to_string(m.order) +
+                " is above " + std::to_string(kMaxTetrahedronOrder) +
+                ", the highest whose det J homesh bounds");
+  const int n = m.num_tetrahedra();
+  MeshValidity v;
+  v.ratio.resize(n);
+  v.min_det.resize(n);
+  v.converged.assign(static_cast<std::size_t>(n), 0);
+  v.relative_tolerance = opt.relative_tolerance;
+  v.max_subdivisions = opt.max_subdivisions;
+  std::vector<char> valid(static_cast<std::size_t>(n));
+#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+  {
+    Eigen::Matrix3Xd X(3, m.tet.rows());
+#pragma omp for schedule(dynamic, 64)
+    for (int e = 0; e < n; ++e) {
+      for (Eigen::Index i = 0; i < X.cols(); ++i) X.col(i) = m.x.col(m.tet(i, e));
+      const JacobianBounds b = tetrahedron_jacobian_bounds(X, m.order, opt);
+      v.ratio(e) = scaled_jacobian_ratio(b);
+      v.min_det(e) = b.min_lower;
+      valid[e] = b.valid_certified;
+      v.converged[e] = b.converged;
+    }
+  }
+  for (int e = 0; e < n; ++e) {
+    v.invalid += valid[e] ? 0 : 1;
+    v.unconverged += v.converged[e] ? 0 : 1;
+    if (v.worst_element < 0 || v.ratio(e) < v.worst) {
+      v.worst = v.ratio(e);
+      v.worst_element = e;
+    }
+  }
+  return v;
+}
+
+}  // namespace homesh

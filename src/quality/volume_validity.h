@@ -1,0 +1,17 @@
+#pragma once
+// Certified validity of every tetrahedron of a volume mesh (issue 24): as
+// quality/mesh_validity.h for planar meshes, an element counts as valid only
+// if the Bezier bounds of its det J (quality/tet_bezier_jacobian.h) prove
+// det J > 0 on the whole element; undecided elements count as invalid.
+#include "core/volume_mesh.h"
+#include "quality/jacobian_bounds.h"
+#include "quality/mesh_validity.h"
+
+namespace homesh {
+
+/// Bounds of det J of every tetrahedron of m, on `threads` threads (0: one per
+/// core). MeshValidity's per-element vectors run over the tetrahedra. Throws
+/// homesh::Error if m's order exceeds kMaxTetrahedronOrder.
+MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt = {}, int threads = 0);
+
+}  // namespace homesh
