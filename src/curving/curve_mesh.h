@@ -28,13 +28,16 @@
 #include "core/mesh.h"
 #include "curving/boundary_reconstruction.h"
 #include "curving/curve_evaluator.h"
+#include "curving/curve_volume.h"
 #include "curving/deform_mesh.h"
 #include "curving/optimise_mesh.h"
 
 namespace homesh {
 
 struct CurveOptions {
-  int order = 2;               ///< p, 2 to kMaxOrder
+  int order = 2;  ///< p, 2 to kMaxOrder (tetrahedra: kMaxTetrahedronOrder)
+  /// Tetrahedral meshes (issue 24): curve_volume's options, its order taken from `order`.
+  VolumeCurveOptions volume;
   bool fixed_vertices = true;  ///< hold the linear mesh's interior vertices (see above)
   DeformOptions deform;        ///< the analogy; its defaults are the curve stage's
   /// Without CAD: how the boundary curves are rebuilt (used by the caller's `place`).

@@ -53,6 +53,38 @@ TEST_CASE("triangle_quadrature is not exact one degree beyond", "[element][quadr
   }
 }
 
+TEST_CASE("tetrahedron_quadrature integrates u^a v^b w^c exactly to its degree, 0..16, not beyond",
+          "[element][quadrature]") {
+  double worst = 0.0;
+  for (int degree = 0; degree <= 16; ++degree) {
+    INFO("degree = " << degree);
+    const TetQuadratureRule rule = tetrahedron_quadrature(degree);
+    REQUIRE(rule.points.cols() == rule.weights.size());
+    CHECK(rule.weights.minCoeff() > 0.0);
+    CHECK(rule.points.minCoeff() > 0.0);
+    CHECK(rule.points.colwise().sum().maxCoeff() < 1.0);
+    const auto integral = [&](int a, int b, int c) {
+      double sum = 0.0;
+      for (Eigen::Index q = 0; q < rule.weights.size(); ++q)
+        sum += rule.weights(q) * std::pow(rule.points(0, q), a) * std::pow(rule.points(1, q), b) *
+               std::pow(rule.points(2, q), c);
+      return sum;
+    };
+    for (int a = 0; a <= degree; ++a)
+      for (int b = 0; a + b <= degree; ++b)
+        for (int c = 0; a + b + c <= degree; ++c) {
+          const double exact =
+              factorial(a) * factorial(b) * factorial(c) / factorial(a + b + c + 3);
+          worst = std::max(worst, std::abs(integral(a, b, c) - exact) / exact);
+        }
+    if (degree % 2 == 1) {  // w^(degree+1) is beyond n Gauss points in t
+      const double exact = factorial(degree + 1) * 2.0 / factorial(degree + 4);
+      CHECK(std::abs(integral(0, 0, degree + 1) - exact) > 1e-8 * exact);
+    }
+  }
+  CHECK(worst < 1e-12);
+}
+
 TEST_CASE("line_quadrature is Gauss-Legendre on [0, 1] exact to its degree, 0..30",
           "[element][quadrature]") {
   for (int degree = 0; degree <= 30; ++degree) {
@@ -94,6 +126,7 @@ TEST_CASE("gauss_jacobi integrates against (1-t)^alpha t^beta exactly to degree 
 
 TEST_CASE("quadrature rejects negative degrees and point counts", "[element][quadrature]") {
   CHECK_THROWS_AS(triangle_quadrature(-1), Error);
+  CHECK_THROWS_AS(tetrahedron_quadrature(-1), Error);
   CHECK_THROWS_AS(line_quadrature(-2), Error);
   CHECK_THROWS_AS(gauss_jacobi(0, 0.0, 0.0), Error);
   CHECK_THROWS_AS(gauss_jacobi(3, -1.0, 0.0), Error);

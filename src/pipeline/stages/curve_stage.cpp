@@ -9,8 +9,10 @@
 #include "gmsh/cad_boundary.h"
 #include "gmsh/cad_curves.h"
 #include "gmsh/gmsh_call.h"
+#include "gmsh/volume_cad.h"
 #include "pipeline/analogy_options.h"
 #include "pipeline/optimiser_options.h"
+#include "pipeline/quality_report.h"
 
 namespace homesh {
 namespace {
@@ -38,7 +40,36 @@ Eigen::Matrix2Xd rebuilt_boundary(Context& ctx, const Mesh& raised,
   return r.target;
 }
 
+// The curve stage on a tetrahedral mesh (issue 24): curving/curve_volume.h.
+void run_volume(Context& ctx, const CurveOptions& o) {
+  if (!ctx.has_cad)
+    throw Error("stage 'curve': " + ctx.input +
+                " has tetrahedra but no CAD: homesh does not rebuild surfaces from a bare .msh "
+                "yet (give the .geo, .step or .brep the mesh was made from)");
+  VolumeCurveOptions v = o.volume;
+  v.order = o.order;
+  VolumeMesh& m = *ctx.volume;
+  const VolumeCad cad = gmsh_adapter::volume_cad();
+  const VolumeCurveResult r = curve_volume(m, cad, v);
+  ctx.fields.clear();
+  ctx.log.info(
+      "curve: p = {}, {} tetrahedra: {} boundary nodes put on the CAD (largest move {:.3g}), "
+      "elastic solve on {} tetrahedra ({} unknowns); {:.3f} s placing, {:.3f} s solving, {:.3f} "
+      "s certifying",
+      v.order, m.num_tetrahedra(), r.placed, r.largest_move, r.region, r.unknowns, r.seconds_place,
+      r.seconds_solve, r.seconds_certify);
+  ctx.log.info("  {}", validity_line(m, r.validity));
+  ctx.results = {{"worst", r.validity.worst},
+                 {"invalid", r.validity.invalid},
+                 {"placed", r.placed},
+                 {"region", r.region},
+                 {"unknowns", r.unknowns},
+                 {"seconds_place", r.seconds_place},
+                 {"seconds_solve", r.seconds_solve}};
+}
+
 void run(Context& ctx, const CurveOptions& o) {
+  if (ctx.volume) return run_volume(ctx, o);
   Mesh& m = ctx.require_mesh("curve");
   std::unique_ptr<gmsh_adapter::CadCurves> cad;
   if (ctx.has_cad)
@@ -213,6 +244,20 @@ Stage curve_stage() {
       real(0, 180, "()"),
       "without CAD (a .msh): boundary vertices turning more than this (degrees) stay sharp "
       "corners of the rebuilt spline curves");
+  t.add(
+      "tet_elastic", [](CurveOptions& o) -> bool& { return o.volume.elastic; }, boolean(),
+      "tetrahedra: carry the boundary's displacement into the volume by the elastic analogy "
+      "(0: move the boundary nodes only, as Gmsh's setOrder)");
+  t.add(
+      "tet_rings", [](CurveOptions& o) -> int& { return o.volume.rings; }, integer(0, 1000),
+      "tetrahedra: the elastic solve takes the elements with a moved node and this many "
+      "layers round them; the rest is held");
+  t.add(
+      "tet_stiffening", [](CurveOptions& o) -> double& { return o.volume.stiffening; }, real(0, 4),
+      "tetrahedra: Young's modulus of an element is its volume to this power, negated");
+  t.add(
+      "tet_nu", [](CurveOptions& o) -> double& { return o.volume.nu; }, real(0, 0.5, "[)"),
+      "tetrahedra: Poisson's ratio of the elastic analogy");
   add_analogy_options(
       t, [](CurveOptions& o) -> std::string& { return o.deform.formulation; },
       [](CurveOptions& o) -> FormulationParams& { return o.deform.params; },
@@ -223,7 +268,7 @@ Stage curve_stage() {
       "interior blended from the curved edges if that is good enough, else by the elastic "
       "analogy (first round the poor elements only), then the "
       "optimiser round the elements left poor (wall nodes sliding on the CAD), valid",
-      t, run, /*creates_mesh=*/false, /*handles_quads=*/true);
+      t, run, /*creates_mesh=*/false, /*handles_quads=*/true, /*handles_volumes=*/true);
 }
 
 }  // namespace homesh

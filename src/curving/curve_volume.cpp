@@ -1,0 +1,213 @@
+#include "curving/curve_volume.h"
+
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "core/error.h"
+#include "core/raise_volume_order.h"
+#include "element/tet_reference_nodes.h"
+#include "fem/tet_elasticity.h"
+#include "quality/volume_validity.h"
+
+namespace homesh {
+namespace {
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Puts the non-corner nodes of m on CAD curves and surfaces at their closest
+// points there; returns each node's displacement (3 by #nodes, zero elsewhere).
+Eigen::Matrix3Xd place_on_cad(VolumeMesh& m, const VolumeCad& cad, VolumeCurveResult& r) {
+  std::vector<char> corner(static_cast<std::size_t>(m.num_nodes()), 0);
+  for (Eigen::Index e = 0; e < m.tet.cols(); ++e)
+    for (int i = 0; i < 4; ++i) corner[m.tet(i, e)] = 1;
+  for (Eigen::Index e = 0; e < m.tri.cols(); ++e)
+    for (int i = 0; i < 3; ++i) corner[m.tri(i, e)] = 1;
+  for (Eigen::Index e = 0; e < m.line.cols(); ++e)
+    for (int i = 0; i < 2; ++i) corner[m.line(i, e)] = 1;
+  std::map<std::pair<int, int>, std::vector<int>> by_entity;
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    const VolumeNodeClass& c = m.node_class[i];
+    if (!corner[i] && (c.dim == 1 || c.dim == 2)) by_entity[{c.dim, c.tag}].push_back(i);
+  }
+  Eigen::Matrix3Xd d = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
+  for (const auto& [entity, nodes] : by_entity) {
+    const auto [dim, tag] = entity;
+    if (!cad.has_geometry(dim, tag)) continue;
+    Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(nodes.size()));
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      x.col(static_cast<Eigen::Index>(k)) = m.x.col(nodes[k]);
+    Eigen::MatrixXd params;
+    const Eigen::Matrix3Xd y = cad.closest(dim, tag, x, params);
+    if (y.cols() != x.cols() || !y.allFinite())
+      throw Error("curve: the CAD's closest points on entity (" + std::to_string(dim) + ", " +
+                  std::to_string(tag) + ") are not all finite");
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      const auto c = static_cast<Eigen::Index>(k);
+      const int i = nodes[k];
+      d.col(i) = y.col(c) - x.col(c);
+      m.x.col(i) = y.col(c);
+      VolumeNodeClass& cls = m.node_class[i];
+      if (params.cols() == x.cols()) {
+        cls.u = params(0, c);
+        if (dim == 2 && params.rows() > 1) cls.v = params(1, c);
+      }
+      r.largest_move = std::max(r.largest_move, d.col(i).norm());
+      ++r.placed;
+    }
+  }
+  return d;
+}
+
+// The tetrahedra within `rings` layers (through shared corners) of those with a
+// node displaced by more than `tol`.
+std::vector<char> solve_region(const VolumeMesh& m, const Eigen::Matrix3Xd& d, double tol,
+                               int rings) {
+  const int n = m.num_tetrahedra();
+  std::vector<char> in(static_cast<std::size_t>(n), 0);
+  for (int e = 0; e < n; ++e)
+    for (Eigen::Index k = 0; k < m.tet.rows() && !in[e]; ++k)
+      in[e] = d.col(m.tet(k, e)).norm() > tol ? 1 : 0;
+  // Corner -> tetrahedra (CSR).
+  std::vector<int> start(static_cast<std::size_t>(m.num_nodes()) + 1, 0), list(4 * n);
+  for (int e = 0; e < n; ++e)
+    for (int i = 0; i < 4; ++i) ++start[m.tet(i, e) + 1];
+  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int e = 0; e < n; ++e)
+    for (int i = 0; i < 4; ++i) list[fill[m.tet(i, e)]++] = e;
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<char> touched(static_cast<std::size_t>(m.num_nodes()), 0);
+    for (int e = 0; e < n; ++e)
+      if (in[e])
+        for (int i = 0; i < 4; ++i) touched[m.tet(i, e)] = 1;
+    for (int v = 0; v < m.num_nodes(); ++v)
+      if (touched[v])
+        for (int k = start[v]; k < start[v + 1]; ++k) in[list[k]] = 1;
+  }
+  return in;
+}
+
+// Marks the nodes on the faces of m's tetrahedra that only one tetrahedron has:
+// the mesh's boundary, whether or not the model gave triangles for it.
+void mark_boundary_faces(const VolumeMesh& m, std::vector<char>& on) {
+  std::map<std::array<int, 3>, std::pair<int, int>> faces;  // sorted corners -> (count, e * 4 + f)
+  for (int e = 0; e < m.num_tetrahedra(); ++e)
+    for (int f = 0; f < 4; ++f) {  // face f: the corners but corner f
+      std::array<int, 3> c;
+      for (int k = 0, n = 0; k < 4; ++k)
+        if (k != f) c[n++] = m.tet(k, e);
+      std::sort(c.begin(), c.end());
+      auto& [count, where] = faces[c];
+      ++count;
+      where = 4 * e + f;
+    }
+  const Eigen::Matrix3Xi ijl = tetrahedron_node_indices(m.order);
+  for (const auto& [corners, use] : faces) {
+    if (use.first != 1) continue;
+    const int e = use.second / 4, f = use.second % 4;
+    for (Eigen::Index k = 0; k < ijl.cols(); ++k) {
+      const int b[4] = {m.order - ijl(0, k) - ijl(1, k) - ijl(2, k), ijl(0, k), ijl(1, k),
+                        ijl(2, k)};
+      if (b[f] == 0) on[m.tet(k, e)] = 1;
+    }
+  }
+}
+
+// The elastic analogy on the region's tetrahedra: nodes inside the volume and
+// used by region elements only are free; the others keep their displacement d
+// (the CAD's on the boundary, zero where the region meets the held mesh or on a
+// boundary the model gave no surface for).
+void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<char>& region,
+                   const VolumeCurveOptions& o, VolumeCurveResult& r) {
+  std::vector<char> held(static_cast<std::size_t>(m.num_nodes()), 0);
+  for (int e = 0; e < m.num_tetrahedra(); ++e)
+    if (!region[e])
+      for (Eigen::Index k = 0; k < m.tet.rows(); ++k) held[m.tet(k, e)] = 1;
+  mark_boundary_faces(m, held);
+  std::vector<int> free(static_cast<std::size_t>(m.num_nodes()), -1);
+  int unknowns = 0;
+  for (int e = 0; e < m.num_tetrahedra(); ++e) {
+    if (!region[e]) continue;
+    ++r.region;
+    for (Eigen::Index k = 0; k < m.tet.rows(); ++k) {
+      const int i = m.tet(k, e);
+      if (free[i] < 0 && !held[i] && m.node_class[i].dim == 3) free[i] = unknowns++;
+    }
+  }
+  r.unknowns = 3 * unknowns;
+  if (unknowns == 0) return;
+
+  const TetTabulation tab = tetrahedron_tabulation(m.order, 2 * (m.order - 1));
+  const double nu = o.nu;
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(3 * unknowns);
+  const Eigen::Index n = m.tet.rows();
+  triplets.reserve(static_cast<std::size_t>(r.region) * static_cast<std::size_t>(9 * n * n / 2));
+  for (int e = 0; e < m.num_tetrahedra(); ++e) {
+    if (!region[e]) continue;
+    // The element's straight-sided shape before placement: its corners and the
+    // affine map (every node but the placed boundary ones is still there).
+    Eigen::Matrix3Xd X = m.tetrahedron_nodes(e);
+    for (Eigen::Index k = 0; k < n; ++k) X.col(k) -= d.col(m.tet(k, e));
+    Eigen::Matrix3d J;
+    J << X.col(1) - X.col(0), X.col(2) - X.col(0), X.col(3) - X.col(0);
+    const double volume = std::abs(J.determinant()) / 6;
+    const double young = std::pow(volume, -o.stiffening);
+    const double lambda = young * nu / ((1 + nu) * (1 - 2 * nu)), mu = young / (2 * (1 + nu));
+    const Eigen::MatrixXd K = tetrahedron_stiffness(X, tab, lambda, mu);
+    for (Eigen::Index a = 0; a < n; ++a) {
+      const int fa = free[m.tet(a, e)];
+      if (fa < 0) continue;
+      for (Eigen::Index b = 0; b < n; ++b) {
+        const int node_b = m.tet(b, e), fb = free[node_b];
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) {
+            const double k = K(3 * a + i, 3 * b + j);
+            if (fb >= 0) {
+              if (3 * fa + i >= 3 * fb + j) triplets.emplace_back(3 * fa + i, 3 * fb + j, k);
+            } else {
+              rhs(3 * fa + i) -= k * d(j, node_b);
+            }
+          }
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> A(3 * unknowns, 3 * unknowns);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  const LinearSolveResult s = solve_linear_system(A, rhs, o.solver);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (free[i] >= 0) m.x.col(i) += s.x.segment<3>(3 * free[i]);
+}
+
+}  // namespace
+
+VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const VolumeCurveOptions& o) {
+  if (o.order < 2 || o.order > kMaxTetrahedronOrder)
+    throw Error("curve: order p = " + std::to_string(o.order) +
+                " is out of range for tetrahedra: 2 to " + std::to_string(kMaxTetrahedronOrder));
+  VolumeCurveResult r;
+  auto t0 = std::chrono::steady_clock::now();
+  m = raise_volume_order(m, o.order);
+  const Eigen::Matrix3Xd d = place_on_cad(m, cad, r);
+  r.seconds_place = since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  if (o.elastic && r.largest_move > 0) {
+    const double extent = (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).maxCoeff();
+    solve_elastic(m, d, solve_region(m, d, 1e-12 * extent, o.rings), o, r);
+  }
+  r.seconds_solve = since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  r.validity = volume_validity(m);
+  r.seconds_certify = since(t0);
+  return r;
+}
+
+}  // namespace homesh

@@ -1,0 +1,67 @@
+#pragma once
+// Curving a tetrahedral mesh onto its CAD (issue 24): the 3D counterpart of
+// curving/curve_mesh.h. The mesh is raised to order p with straight sides
+// (core/raise_volume_order.h); every new node on a CAD curve or surface is put
+// on it (its closest point there); the displacement of those boundary nodes is
+// carried into the volume by the elastic analogy (thesis Ch 4, Eq 4.13, in its
+// 3D form fem/tet_elasticity.h), solved only on the tetrahedra within `rings`
+// layers of those whose nodes moved, the rest of the mesh held.
+#include <Eigen/Core>
+#include <functional>
+
+#include "core/volume_mesh.h"
+#include "fem/linear_solver.h"
+#include "quality/mesh_validity.h"
+
+namespace homesh {
+
+/// The CAD of a volume mesh's curves and surfaces, as the curving needs it (the
+/// Gmsh adapter gives it: gmsh/volume_cad.h).
+struct VolumeCad {
+  /// Whether curve (dim 1) or surface (dim 2) `tag` has a geometry to put nodes on.
+  std::function<bool(int dim, int tag)> has_geometry;
+  /// The closest points on entity (dim, tag) to the columns of x (3 by n), and
+  /// their parameters there (dim by n: u, or u and v).
+  std::function<Eigen::Matrix3Xd(int dim, int tag, const Eigen::Matrix3Xd& x,
+                                 Eigen::MatrixXd& params)>
+      closest;
+};
+
+struct VolumeCurveOptions {
+  /// p, 2 to kMaxTetrahedronOrder.
+  int order = 2;
+  /// Carry the boundary's displacement into the volume by the elastic analogy;
+  /// false: only the boundary nodes move (as Gmsh's setOrder does).
+  bool elastic = true;
+  /// Poisson's ratio of the analogy.
+  double nu = 0.4;
+  /// Young's modulus of an element is its volume to the power -stiffening: the
+  /// thesis' E = 1 / Ae (Sec 4.2.1) in 3D for 1, so small elements next to the
+  /// wall deform least.
+  double stiffening = 1.0;
+  /// Layers of tetrahedra round those with a moved node that the solve takes
+  /// in (beyond them the mesh is held).
+  int rings = 1;
+  LinearSolverOptions solver;
+};
+
+struct VolumeCurveResult {
+  /// Boundary nodes put on the CAD, and the largest distance one moved.
+  int placed = 0;
+  double largest_move = 0;
+  /// Tetrahedra and unknowns of the elastic solve.
+  int region = 0;
+  int unknowns = 0;
+  /// Certified validity of the result (quality/volume_validity.h).
+  MeshValidity validity;
+  /// Wall seconds: raising and placing, solving, certifying.
+  double seconds_place = 0, seconds_solve = 0, seconds_certify = 0;
+};
+
+/// Curves m (linear or of any order: only its corners are kept) to order
+/// o.order onto `cad`. Throws homesh::Error if o.order is out of range or the
+/// solve fails.
+VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad,
+                               const VolumeCurveOptions& o = {});
+
+}  // namespace homesh

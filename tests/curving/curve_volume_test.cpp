@@ -1,0 +1,190 @@
+#include "curving/curve_volume.h"
+
+#include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/raise_volume_order.h"
+
+using namespace homesh;
+
+namespace {
+
+// The cube [0, 1]^3 cut in n^3 cells of 6 tetrahedra each (Kuhn: round the
+// diagonal (0,0,0)-(1,1,1) of the cell), every boundary face a triangle of the
+// surface of its side (tags 1..6: x = 0, x = 1, y = 0, y = 1, z = 0, z = 1),
+// all nodes on the volume (tag 1) but those on the sides.
+VolumeMesh cube(int n) {
+  VolumeMesh m;
+  const int v = n + 1;
+  const auto id = [&](int i, int j, int k) { return (k * v + j) * v + i; };
+  m.x.resize(3, v * v * v);
+  m.node_class.assign(static_cast<std::size_t>(v * v * v), {3, 1});
+  for (int k = 0; k < v; ++k)
+    for (int j = 0; j < v; ++j)
+      for (int i = 0; i < v; ++i) {
+        m.x.col(id(i, j, k)) << double(i) / n, double(j) / n, double(k) / n;
+        const int side = i == 0   ? 1
+                         : i == n ? 2
+                         : j == 0 ? 3
+                         : j == n ? 4
+                         : k == 0 ? 5
+                         : k == n ? 6
+                                  : 0;
+        if (side) m.node_class[id(i, j, k)] = {2, side};
+      }
+  // The 6 paths from (0,0,0) to (1,1,1) along the axes: one tetrahedron each.
+  const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  std::vector<std::array<int, 4>> tets;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        for (const auto& path : paths) {
+          int c[3] = {i, j, k};
+          std::array<int, 4> t;
+          t[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            ++c[path[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          // Positive orientation: swap two corners where det < 0.
+          Eigen::Matrix3d J;
+          J << m.x.col(t[1]) - m.x.col(t[0]), m.x.col(t[2]) - m.x.col(t[0]),
+              m.x.col(t[3]) - m.x.col(t[0]);
+          if (J.determinant() < 0) std::swap(t[2], t[3]);
+          tets.push_back(t);
+        }
+  m.tet.resize(4, static_cast<Eigen::Index>(tets.size()));
+  for (std::size_t e = 0; e < tets.size(); ++e)
+    for (int c = 0; c < 4; ++c) m.tet(c, static_cast<Eigen::Index>(e)) = tets[e][c];
+  m.tet_entity.assign(tets.size(), 1);
+  // Boundary triangles: the tetrahedra's faces on a side.
+  std::vector<std::array<int, 3>> tris;
+  for (const auto& t : tets)
+    for (int f = 0; f < 4; ++f) {
+      std::array<int, 3> c;
+      for (int a = 0, b = 0; a < 4; ++a)
+        if (a != f) c[b++] = t[a];
+      for (int side = 1; side <= 6; ++side) {
+        bool on = true;
+        for (int q : c) on = on && m.node_class[q].dim == 2 && m.node_class[q].tag == side;
+        const int axis = (side - 1) / 2;
+        const double at = (side - 1) % 2;
+        on = true;
+        for (int q : c) on = on && m.x(axis, q) == at;
+        if (on) {
+          tris.push_back(c);
+          m.tri_entity.push_back(side);
+        }
+      }
+    }
+  m.tri.resize(3, static_cast<Eigen::Index>(tris.size()));
+  for (std::size_t e = 0; e < tris.size(); ++e)
+    for (int c = 0; c < 3; ++c) m.tri(c, static_cast<Eigen::Index>(e)) = tris[e][c];
+  return m;
+}
+
+// The vertices of cube(n)'s side z = 1 moved up onto dome(a), as a mesher puts them.
+VolumeMesh domed_cube(int n, double a) {
+  VolumeMesh m = cube(n);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_class[i].dim == 2 && m.node_class[i].tag == 6) {
+      const double x = m.x(0, i), y = m.x(1, i);
+      m.x(2, i) = 1 + a * x * (1 - x) * y * (1 - y);
+    }
+  return m;
+}
+
+// A "CAD" whose side z = 1 (tag 6) is the dome z = 1 + a x (1 - x) y (1 - y),
+// reached straight up from the flat side; the other sides have no geometry.
+VolumeCad dome(double a) {
+  VolumeCad cad;
+  cad.has_geometry = [](int dim, int tag) { return dim == 2 && tag == 6; };
+  cad.closest = [a](int, int, const Eigen::Matrix3Xd& x, Eigen::MatrixXd& params) {
+    Eigen::Matrix3Xd y = x;
+    params.resize(2, x.cols());
+    for (Eigen::Index k = 0; k < x.cols(); ++k) {
+      y(2, k) = 1 + a * x(0, k) * (1 - x(0, k)) * x(1, k) * (1 - x(1, k));
+      params.col(k) << x(0, k), x(1, k);
+    }
+    return y;
+  };
+  return cad;
+}
+
+}  // namespace
+
+TEST_CASE("curve_volume puts the boundary nodes on the CAD and leaves the flat sides",
+          "[curving][curve_volume]") {
+  for (int p = 2; p <= 4; ++p) {
+    INFO("p = " << p);
+    VolumeMesh m = domed_cube(3, 0.8);
+    VolumeCurveOptions o;
+    o.order = p;
+    const VolumeCurveResult r = curve_volume(m, dome(0.8), o);
+    CHECK(m.order == p);
+    int on_dome = 0;
+    for (int i = 0; i < m.num_nodes(); ++i) {
+      const VolumeNodeClass& c = m.node_class[i];
+      if (c.dim != 2) continue;
+      const double x = m.x(0, i), y = m.x(1, i);
+      if (c.tag == 6) {
+        ++on_dome;
+        CHECK(m.x(2, i) == Approx(1 + 0.8 * x * (1 - x) * y * (1 - y)).margin(1e-14));
+        if (std::isfinite(c.u)) CHECK(c.u == x);  // the vertices keep the mesher's (none here)
+      } else {
+        // Other sides: still on their planes.
+        const int axis = (c.tag - 1) / 2;
+        CHECK(m.x(axis, i) == double((c.tag - 1) % 2));
+      }
+    }
+    CHECK(on_dome > 0);
+    CHECK(r.placed > 0);
+    CHECK(r.largest_move > 0.01);
+    CHECK(r.region > 0);
+    CHECK(r.unknowns > 0);
+    CHECK(r.validity.invalid == 0);
+  }
+}
+
+TEST_CASE("curve_volume: the elastic analogy moves the interior and beats moving the boundary only",
+          "[curving][curve_volume]") {
+  const int p = 3;
+  // A steep dome over a fine mesh: the elements under it are squashed or
+  // inverted if only the boundary moves.
+  VolumeMesh solid = domed_cube(4, -1.6), straight = domed_cube(4, -1.6);
+  VolumeCurveOptions o;
+  o.order = p;
+  o.rings = 4;
+  const VolumeCurveResult elastic = curve_volume(solid, dome(-1.6), o);
+  o.elastic = false;
+  const VolumeCurveResult boundary_only = curve_volume(straight, dome(-1.6), o);
+  CHECK(boundary_only.region == 0);
+  INFO("worst " << elastic.validity.worst << " against " << boundary_only.validity.worst);
+  CHECK(elastic.validity.worst > boundary_only.validity.worst + 0.1);
+  CHECK(elastic.validity.invalid == 0);
+  // Interior nodes moved (down, under a dome pushed in), boundary nodes moved alike.
+  double moved = 0;
+  for (int i = 0; i < solid.num_nodes(); ++i)
+    if (solid.node_class[i].dim == 3)
+      moved = std::max(moved, (solid.x.col(i) - straight.x.col(i)).norm());
+  CHECK(moved > 1e-3);
+  // Nodes on the flat sides never move, even where the model's triangles are missing.
+  VolumeMesh bare = domed_cube(2, -1.6);
+  bare.tri.resize(3, 0);
+  bare.tri_entity.clear();
+  o.elastic = true;
+  const Eigen::Matrix3Xd before = raise_volume_order(bare, p).x;
+  curve_volume(bare, dome(-1.6), o);  // without triangles no node is on the dome's side
+  CHECK((bare.x - before).cwiseAbs().maxCoeff() == 0.0);
+}
+
+TEST_CASE("curve_volume refuses orders out of range", "[curving][curve_volume]") {
+  VolumeMesh m = cube(1);
+  VolumeCurveOptions o;
+  o.order = 1;
+  CHECK_THROWS_WITH(curve_volume(m, dome(0.1), o), Catch::Contains("order p = 1 is out of range"));
+  o.order = kMaxTetrahedronOrder + 1;
+  CHECK_THROWS_AS(curve_volume(m, dome(0.1), o), Error);
+}
