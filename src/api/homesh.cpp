@@ -100,7 +100,7 @@ void write_volume(const std::string& path, OutputFormat format, const std::strin
   if (format == OutputFormat::vtu) {
     // The model's views are over Gmsh's own element tags; the .vtu carries the certificate.
     const Field ratio{kValidityFieldName, Field::Kind::Element, certified.ratio.transpose()};
-    write_vtu(path, m, {ratio}, provenance + "\n" + v.line);
+    write_vtu(path, m, {ratio}, provenance + "\n" + v.line, tags);
     return;
   }
   std::vector<int> views;

@@ -20,11 +20,11 @@ namespace homesh {
 struct VolumeCad {
   /// Whether curve (dim 1) or surface (dim 2) `tag` has a geometry to put nodes on.
   std::function<bool(int dim, int tag)> has_geometry;
-  /// The closest points on entity (dim, tag) to the columns of x (3 by n), and
-  /// their parameters there (dim by n: u, or u and v).
-  std::function<Eigen::Matrix3Xd(int dim, int tag, const Eigen::Matrix3Xd& x,
-                                 Eigen::MatrixXd& params)>
-      closest;
+  /// The closest points on entity (dim, tag) to the columns of x (3 by n).
+  std::function<Eigen::Matrix3Xd(int dim, int tag, const Eigen::Matrix3Xd& x)> closest;
+  /// The parameters (dim by n: u, or u and v) of the points x on entity (dim,
+  /// tag); NaN where they cannot be found.
+  std::function<Eigen::MatrixXd(int dim, int tag, const Eigen::Matrix3Xd& x)> parameters;
 };
 
 struct VolumeCurveOptions {
@@ -43,6 +43,11 @@ struct VolumeCurveOptions {
   /// in (beyond them the mesh is held).
   int rings = 1;
   LinearSolverOptions solver;
+  /// Then optimise round the elements left below this certified minJ/maxJ
+  /// (curving/optimise_volume.h; <= 0: never): up to three starts, the later
+  /// ones sliding the linear mesh's vertices on the CAD, the last one ring wider.
+  double optimise_threshold = 0.3;
+  int optimise_rings = 1;
 };
 
 struct VolumeCurveResult {
@@ -52,10 +57,13 @@ struct VolumeCurveResult {
   /// Tetrahedra and unknowns of the elastic solve.
   int region = 0;
   int unknowns = 0;
+  /// The optimiser's patches and those it kept, and the worst minJ/maxJ before it.
+  int patches = 0, optimised = 0;
+  double worst_before_optimiser = 1;
   /// Certified validity of the result (quality/volume_validity.h).
   MeshValidity validity;
-  /// Wall seconds: raising and placing, solving, certifying.
-  double seconds_place = 0, seconds_solve = 0, seconds_certify = 0;
+  /// Wall seconds: raising and placing, solving, certifying, optimising.
+  double seconds_place = 0, seconds_solve = 0, seconds_certify = 0, seconds_optimise = 0;
 };
 
 /// Curves m (linear or of any order: only its corners are kept) to order

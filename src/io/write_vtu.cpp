@@ -281,14 +281,20 @@ std::string vtu_text(const Mesh& mesh, const std::vector<Field>& fields,
 }
 
 std::string vtu_text(const VolumeMesh& mesh, const std::vector<Field>& fields,
-                     const std::string& provenance) {
+                     const std::string& provenance, const std::vector<std::size_t>& tet_tags) {
+  if (!tet_tags.empty() && tet_tags.size() != static_cast<std::size_t>(mesh.num_tetrahedra()))
+    throw Error("vtu: " + std::to_string(tet_tags.size()) + " tetrahedron tags for " +
+                std::to_string(mesh.num_tetrahedra()) + " tetrahedra");
   const int p = mesh.order;
   const auto first_line_tag = static_cast<std::int64_t>(1 + mesh.point_node.size());
   const auto first_triangle_tag = first_line_tag + mesh.num_lines();
   const std::vector<CellBlock> blocks = {
       {&mesh.tet, gmsh_to_vtk_tetrahedron(p), p == 1 ? kVtkTetra : kVtkLagrangeTetrahedron,
        &mesh.tet_entity, 3,
-       [&](int e) { return static_cast<std::int64_t>(mesh.tetrahedron_tag(e)); }, true},
+       [&](int e) {
+         return static_cast<std::int64_t>(tet_tags.empty() ? mesh.tetrahedron_tag(e) : tet_tags[e]);
+       },
+       true},
       {&mesh.tri, gmsh_to_vtk_triangle(p), p == 1 ? kVtkTriangle : kVtkLagrangeTriangle,
        &mesh.tri_entity, 2, [&](int e) { return first_triangle_tag + e; }, false},
       {&mesh.line, line_nodes_along(p), p == 1 ? kVtkLine : kVtkPolyLine, &mesh.line_entity, 1,
@@ -303,8 +309,8 @@ void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<Fiel
 }
 
 void write_vtu(const std::string& path, const VolumeMesh& mesh, const std::vector<Field>& fields,
-               const std::string& provenance) {
-  write_text(path, [&] { return vtu_text(mesh, fields, provenance); });
+               const std::string& provenance, const std::vector<std::size_t>& tet_tags) {
+  write_text(path, [&] { return vtu_text(mesh, fields, provenance, tet_tags); });
 }
 
 }  // namespace homesh

@@ -80,11 +80,13 @@ void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<Fiel
 /// "gmsh:element" holds the tags of VolumeMesh::tetrahedron_tag and those
 /// write_volume_model gives the triangles and lines; "gmsh:physical" the groups
 /// of each cell's dimension.
+/// `tet_tags` (#tetrahedra, or empty) names the tetrahedra as a model that
+/// numbers them its own way does.
 std::string vtu_text(const VolumeMesh& mesh, const std::vector<Field>& fields,
-                     const std::string& provenance);
+                     const std::string& provenance, const std::vector<std::size_t>& tet_tags = {});
 
-/// Writes vtu_text(mesh, fields, provenance) of a volume mesh to `path` atomically.
+/// Writes vtu_text(mesh, fields, provenance, tet_tags) of a volume mesh to `path` atomically.
 void write_vtu(const std::string& path, const VolumeMesh& mesh, const std::vector<Field>& fields,
-               const std::string& provenance);
+               const std::string& provenance, const std::vector<std::size_t>& tet_tags = {});
 
 }  // namespace homesh

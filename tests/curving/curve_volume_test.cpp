@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/raise_volume_order.h"
+#include "quality/volume_validity.h"
 
 using namespace homesh;
 
@@ -14,8 +15,9 @@ namespace {
 // The cube [0, 1]^3 cut in n^3 cells of 6 tetrahedra each (Kuhn: round the
 // diagonal (0,0,0)-(1,1,1) of the cell), every boundary face a triangle of the
 // surface of its side (tags 1..6: x = 0, x = 1, y = 0, y = 1, z = 0, z = 1),
-// all nodes on the volume (tag 1) but those on the sides.
-VolumeMesh cube(int n) {
+// all nodes on the volume (tag 1) but those on the sides. `top` > 0: the
+// last layer of cells is that thin (a boundary layer under z = 1).
+VolumeMesh cube(int n, double top = 0) {
   VolumeMesh m;
   const int v = n + 1;
   const auto id = [&](int i, int j, int k) { return (k * v + j) * v + i; };
@@ -24,7 +26,8 @@ VolumeMesh cube(int n) {
   for (int k = 0; k < v; ++k)
     for (int j = 0; j < v; ++j)
       for (int i = 0; i < v; ++i) {
-        m.x.col(id(i, j, k)) << double(i) / n, double(j) / n, double(k) / n;
+        const double z = top > 0 && k == n - 1 ? 1 - top : double(k) / n;
+        m.x.col(id(i, j, k)) << double(i) / n, double(j) / n, z;
         const int side = i == 0   ? 1
                          : i == n ? 2
                          : j == 0 ? 3
@@ -86,13 +89,16 @@ VolumeMesh cube(int n) {
 }
 
 // The vertices of cube(n)'s side z = 1 moved up onto dome(a), as a mesher puts them.
-VolumeMesh domed_cube(int n, double a) {
-  VolumeMesh m = cube(n);
-  for (int i = 0; i < m.num_nodes(); ++i)
-    if (m.node_class[i].dim == 2 && m.node_class[i].tag == 6) {
-      const double x = m.x(0, i), y = m.x(1, i);
-      m.x(2, i) = 1 + a * x * (1 - x) * y * (1 - y);
-    }
+// With a `top` layer, the layer's lower vertices follow the dome at that depth.
+VolumeMesh domed_cube(int n, double a, double top = 0) {
+  VolumeMesh m = cube(n, top);
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    const double x = m.x(0, i), y = m.x(1, i), bump = a * x * (1 - x) * y * (1 - y);
+    if (m.node_class[i].dim == 2 && m.node_class[i].tag == 6)
+      m.x(2, i) = 1 + bump;
+    else if (top > 0 && m.x(2, i) == 1 - top)
+      m.x(2, i) += bump;
+  }
   return m;
 }
 
@@ -101,14 +107,14 @@ VolumeMesh domed_cube(int n, double a) {
 VolumeCad dome(double a) {
   VolumeCad cad;
   cad.has_geometry = [](int dim, int tag) { return dim == 2 && tag == 6; };
-  cad.closest = [a](int, int, const Eigen::Matrix3Xd& x, Eigen::MatrixXd& params) {
+  cad.closest = [a](int, int, const Eigen::Matrix3Xd& x) {
     Eigen::Matrix3Xd y = x;
-    params.resize(2, x.cols());
-    for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    for (Eigen::Index k = 0; k < x.cols(); ++k)
       y(2, k) = 1 + a * x(0, k) * (1 - x(0, k)) * x(1, k) * (1 - x(1, k));
-      params.col(k) << x(0, k), x(1, k);
-    }
     return y;
+  };
+  cad.parameters = [](int, int, const Eigen::Matrix3Xd& x) -> Eigen::MatrixXd {
+    return x.topRows<2>();
   };
   return cad;
 }
@@ -187,4 +193,37 @@ TEST_CASE("curve_volume refuses orders out of range", "[curving][curve_volume]")
   CHECK_THROWS_WITH(curve_volume(m, dome(0.1), o), Catch::Contains("order p = 1 is out of range"));
   o.order = kMaxTetrahedronOrder + 1;
   CHECK_THROWS_AS(curve_volume(m, dome(0.1), o), Error);
+}
+
+TEST_CASE("curve_volume: the optimiser mends what moving the boundary alone inverts",
+          "[curving][curve_volume]") {
+  for (int p = 2; p <= 3; ++p) {
+    INFO("p = " << p);
+    VolumeCurveOptions o;
+    o.order = p;
+    o.elastic = false;
+    o.optimise_threshold = 0;  // off
+    // A layer 0.01 thin under a dome pushed in: its elements fold.
+    VolumeMesh raw = domed_cube(3, -3.0, 0.01);
+    const VolumeCurveResult off = curve_volume(raw, dome(-3.0), o);
+    REQUIRE(off.validity.invalid > 0);
+    CHECK(off.patches == 0);
+    o.optimise_threshold = 0.3;
+    VolumeMesh mended = domed_cube(3, -3.0, 0.01);
+    const VolumeCurveResult on = curve_volume(mended, dome(-3.0), o);
+    CHECK(on.patches > 0);
+    CHECK(on.optimised > 0);
+    CHECK(on.worst_before_optimiser == off.validity.worst);
+    CHECK(on.validity.invalid == 0);
+    // The optimiser's bookkeeping is the certificate of the mesh it leaves.
+    const MeshValidity again = volume_validity(mended);
+    CHECK(again.invalid == 0);
+    CHECK(again.worst == on.validity.worst);
+    // Nodes on the dome stayed on it.
+    for (int i = 0; i < mended.num_nodes(); ++i)
+      if (mended.node_class[i].dim == 2 && mended.node_class[i].tag == 6) {
+        const double x = mended.x(0, i), y = mended.x(1, i);
+        CHECK(mended.x(2, i) == Approx(1 - 3.0 * x * (1 - x) * y * (1 - y)).margin(1e-14));
+      }
+  }
 }

@@ -301,3 +301,54 @@ def test_quadrilaterals_read_by_vtk_interpolate_as_gmsh(model, tmp_path, p):
     ratio = cell_array(grid, "homesh: certified minJ/maxJ")
     surface = [grid.GetCell(c).GetCellDimension() == 2 for c in range(grid.GetNumberOfCells())]
     assert not np.isnan(ratio[surface]).any() and np.isnan(ratio[np.logical_not(surface)]).all()
+
+
+@pytest.mark.parametrize("p", [1, 2, 3, 4])
+def test_curved_tetrahedra_read_by_vtk_interpolate_as_gmsh(model, tmp_path, p):
+    """A unit ball cut out of a box, meshed in tetrahedra by Gmsh and curved by homesh at
+    order p (issue 24): VTK reads each tetrahedron as a Lagrange tetrahedron (71; VTK_TETRA at
+    p = 1) of (p+1)(p+2)(p+3)/6 nodes whose map equals Gmsh's at random reference points (the
+    node order maps Gmsh's to VTK's, which differ from p = 2 on), and the certified minJ/maxJ
+    is cell data of the tetrahedra (NaN on the surface triangles and lines)."""
+    gmsh.clear()
+    gmsh.model.occ.addBox(-2, -2, -2, 4, 4, 4, 1)
+    gmsh.model.occ.addSphere(0, 0, 0, 1, 2)
+    gmsh.model.occ.cut([(3, 1)], [(3, 2)])
+    gmsh.model.occ.synchronize()
+    gmsh.option.setNumber("Mesh.MeshSizeMax", 1.0)
+    gmsh.model.mesh.generate(3)
+    if p > 1:
+        assert homesh.curve(p=p)["validity"]["invalid"] == 0
+    path = tmp_path / "ball.vtu"
+    homesh.write(str(path))
+    grid = read_vtu(path)
+    tags = cell_array(grid, "gmsh:element")
+    tet_type = gmsh.model.mesh.getElementType("Tetrahedron", p)
+    tets = set(gmsh.model.mesh.getElementsByType(tet_type)[0])
+    rng = np.random.default_rng(p)
+    seen, curved = 0, 0
+    for c in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(c)
+        if cell.GetCellDimension() != 3:
+            continue
+        seen += 1
+        assert int(tags[c]) in tets
+        assert cell.GetCellType() == (vtk.VTK_TETRA if p == 1 else vtk.VTK_LAGRANGE_TETRAHEDRON)
+        assert cell.GetNumberOfPoints() == (p + 1) * (p + 2) * (p + 3) // 6
+        for u, v, w in rng.dirichlet([1, 1, 1, 1], 2)[:, 1:]:
+            x, weights = [0.0, 0.0, 0.0], [0.0] * cell.GetNumberOfPoints()
+            cell.EvaluateLocation(vtk.mutable(0), [u, v, w], x, weights)
+            _, _, expected = gmsh.model.mesh.getJacobian(int(tags[c]), [u, v, w])
+            assert np.allclose(x, expected, rtol=0, atol=1e-12)
+            # Away from the box's flat sides some elements are curved.
+            corners = [grid.GetPoint(cell.GetPointId(k)) for k in range(4)]
+            straight = (1 - u - v - w) * np.array(corners[0]) + u * np.array(corners[1]) + \
+                v * np.array(corners[2]) + w * np.array(corners[3])
+            curved += np.linalg.norm(np.array(x) - straight) > 1e-6
+    assert seen == len(tets)
+    assert (curved > 0) == (p > 1)
+    ratio = cell_array(grid, "homesh: certified minJ/maxJ")
+    volume = np.array([grid.GetCell(c).GetCellDimension() == 3
+                       for c in range(grid.GetNumberOfCells())])
+    assert not np.isnan(ratio[volume]).any() and np.isnan(ratio[~volume]).all()
+    assert ratio[volume].min() > 0

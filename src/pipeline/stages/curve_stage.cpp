@@ -58,8 +58,15 @@ void run_volume(Context& ctx, const CurveOptions& o) {
       "s certifying",
       v.order, m.num_tetrahedra(), r.placed, r.largest_move, r.region, r.unknowns, r.seconds_place,
       r.seconds_solve, r.seconds_certify);
+  if (r.patches > 0)
+    ctx.log.info("  optimiser: {} of {} patches kept, worst minJ/maxJ {:.4f} -> {:.4f} ({:.3f} s)",
+                 r.optimised, r.patches, r.worst_before_optimiser, r.validity.worst,
+                 r.seconds_optimise);
   ctx.log.info("  {}", validity_line(m, r.validity));
-  ctx.results = {{"worst", r.validity.worst},
+  ctx.results = {{"patches", r.patches},
+                 {"optimised", r.optimised},
+                 {"seconds_optimise", r.seconds_optimise},
+                 {"worst", r.validity.worst},
                  {"invalid", r.validity.invalid},
                  {"placed", r.placed},
                  {"region", r.region},
@@ -255,6 +262,14 @@ Stage curve_stage() {
   t.add(
       "tet_stiffening", [](CurveOptions& o) -> double& { return o.volume.stiffening; }, real(0, 4),
       "tetrahedra: Young's modulus of an element is its volume to this power, negated");
+  t.add(
+      "tet_optimise", [](CurveOptions& o) -> double& { return o.volume.optimise_threshold; },
+      real(-1, 1),
+      "tetrahedra: optimise round the elements left below this minJ/maxJ (<= 0: never)");
+  t.add(
+      "tet_patch_rings", [](CurveOptions& o) -> int& { return o.volume.optimise_rings; },
+      integer(0, 100),
+      "tetrahedra: the optimiser's patches are its poor elements and this many layers");
   t.add(
       "tet_nu", [](CurveOptions& o) -> double& { return o.volume.nu; }, real(0, 0.5, "[)"),
       "tetrahedra: Poisson's ratio of the elastic analogy");
