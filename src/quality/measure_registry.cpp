@@ -8,6 +8,7 @@
 #include "quality/jacobian_variation.h"
 #include "quality/shape_measures.h"
 #include "quality/size_measures.h"
+#include "quality/volume_measures.h"
 
 namespace homesh {
 namespace {
@@ -67,6 +68,37 @@ std::vector<Measure> make_measures() {
   };
 }
 
+// The 3D forms (d = 3) of the pointwise measures, by name.
+std::vector<Measure> with_volume_forms(std::vector<Measure> table) {
+  const struct {
+    const char* name;
+    PointMeasure3 raw, quality;
+  } forms[] = {
+      {"Q2", laplace_raw3, laplace_quality3},
+      {"Q3", metric_tensor_raw3, metric_tensor_quality3},
+      {"Q4", equal_volume_raw3, equal_volume_quality3},
+      {"Q5", adjoint_raw3, adjoint_quality3},
+      {"Q6", smoothness_raw3, smoothness_quality3},
+      {"Q7", aspect_ratio_raw3, aspect_ratio_quality3},
+      {"Q8", oddy_raw3, oddy_quality3},
+      {"Q9", nondimensional_smoothness_raw3, nondimensional_smoothness_quality3},
+      {"Q10", inverse_mean_ratio_raw3, inverse_mean_ratio_quality3},
+      {"Q11", condition_number_raw3, condition_number_quality3},
+      {"Q12", shape_raw3, shape_quality3},
+      {"Q13", dilation_raw3, dilation_quality3},
+      {"Q14", shape_dilation_raw3, shape_dilation_quality3},
+      {"Q16", metric_condition_number_raw3, metric_condition_number_quality3},
+      {"Q17", idealised_jacobian_raw3, idealised_jacobian_quality3},
+  };
+  for (Measure& m : table)
+    for (const auto& f : forms)
+      if (m.name == f.name) {
+        m.raw3 = f.raw;
+        m.quality3 = f.quality;
+      }
+  return table;
+}
+
 std::string upper(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
@@ -76,7 +108,7 @@ std::string upper(std::string s) {
 }  // namespace
 
 const std::vector<Measure>& measures() {
-  static const std::vector<Measure> table = make_measures();
+  static const std::vector<Measure> table = with_volume_forms(make_measures());
   return table;
 }
 

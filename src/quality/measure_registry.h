@@ -27,6 +27,8 @@ namespace homesh {
 
 /// A measure of W at one point.
 using PointMeasure = double (*)(const Eigen::Matrix2d& W);
+/// A measure of W (3 by 3) at one point of a tetrahedron (issue 24).
+using PointMeasure3 = double (*)(const Eigen::Matrix3d& W);
 /// A measure of a whole element with nodes X (2 by s.node_count(), Gmsh order)
 /// sampled at the points of s.
 using ElementMeasure = double (*)(const ElementSampling& s, const Eigen::Matrix2Xd& X);
@@ -58,6 +60,12 @@ struct Measure {
   PointMeasure quality;
   /// Normalised quality of the whole element (Q1); null for pointwise measures.
   ElementMeasure element;
+
+  /// On tetrahedra (quality/volume_measures.h): the raw value and the
+  /// normalised quality with d = 3; null for Q1, a measure of the whole element
+  /// in any dimension (quality/volume_quality.h computes it).
+  PointMeasure3 raw3 = nullptr;
+  PointMeasure3 quality3 = nullptr;
 
   /// True if the quality is a function of W at one point.
   bool pointwise() const { return quality != nullptr; }
