@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/raise_volume_order.h"
 #include "curving/optimise_volume.h"
+#include "curving/place_on_volume_cad.h"
 #include "element/tet_reference_nodes.h"
 #include "fem/tet_elasticity.h"
 #include "quality/volume_validity.h"
@@ -20,50 +21,6 @@ namespace {
 
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Puts the non-corner nodes of m on CAD curves and surfaces at their closest
-// points there; returns each node's displacement (3 by #nodes, zero elsewhere).
-Eigen::Matrix3Xd place_on_cad(VolumeMesh& m, const VolumeCad& cad, VolumeCurveResult& r) {
-  std::vector<char> corner(static_cast<std::size_t>(m.num_nodes()), 0);
-  for (Eigen::Index e = 0; e < m.tet.cols(); ++e)
-    for (int i = 0; i < 4; ++i) corner[m.tet(i, e)] = 1;
-  for (Eigen::Index e = 0; e < m.tri.cols(); ++e)
-    for (int i = 0; i < 3; ++i) corner[m.tri(i, e)] = 1;
-  for (Eigen::Index e = 0; e < m.line.cols(); ++e)
-    for (int i = 0; i < 2; ++i) corner[m.line(i, e)] = 1;
-  std::map<std::pair<int, int>, std::vector<int>> by_entity;
-  for (int i = 0; i < m.num_nodes(); ++i) {
-    const VolumeNodeClass& c = m.node_class[i];
-    if (!corner[i] && (c.dim == 1 || c.dim == 2)) by_entity[{c.dim, c.tag}].push_back(i);
-  }
-  Eigen::Matrix3Xd d = Eigen::Matrix3Xd::Zero(3, m.num_nodes());
-  for (const auto& [entity, nodes] : by_entity) {
-    const auto [dim, tag] = entity;
-    if (!cad.has_geometry(dim, tag)) continue;
-    Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(nodes.size()));
-    for (std::size_t k = 0; k < nodes.size(); ++k)
-      x.col(static_cast<Eigen::Index>(k)) = m.x.col(nodes[k]);
-    const Eigen::Matrix3Xd y = cad.closest(dim, tag, x);
-    if (y.cols() != x.cols() || !y.allFinite())
-      throw Error("curve: the CAD's closest points on entity (" + std::to_string(dim) + ", " +
-                  std::to_string(tag) + ") are not all finite");
-    const Eigen::MatrixXd params = cad.parameters(dim, tag, y);
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-      const auto c = static_cast<Eigen::Index>(k);
-      const int i = nodes[k];
-      d.col(i) = y.col(c) - x.col(c);
-      m.x.col(i) = y.col(c);
-      VolumeNodeClass& cls = m.node_class[i];
-      if (params.cols() == x.cols()) {
-        cls.u = params(0, c);
-        if (dim == 2 && params.rows() > 1) cls.v = params(1, c);
-      }
-      r.largest_move = std::max(r.largest_move, d.col(i).norm());
-      ++r.placed;
-    }
-  }
-  return d;
 }
 
 // The tetrahedra within `rings` layers (through shared corners) of those with a
@@ -180,7 +137,11 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
   VolumeCurveResult r;
   auto t0 = std::chrono::steady_clock::now();
   m = raise_volume_order(m, o.order);
-  const Eigen::Matrix3Xd d = place_on_cad(m, cad, r);
+  VolumePlacement placed = place_on_volume_cad(m, cad);
+  const Eigen::Matrix3Xd d = std::move(placed.displacement);
+  r.placed = placed.by_parameters + placed.by_projection;
+  r.projected = placed.by_projection;
+  r.largest_move = placed.largest_move;
   r.seconds_place = since(t0);
 
   t0 = std::chrono::steady_clock::now();

@@ -2,7 +2,7 @@
 // Curving a tetrahedral mesh onto its CAD (issue 24): the 3D counterpart of
 // curving/curve_mesh.h. The mesh is raised to order p with straight sides
 // (core/raise_volume_order.h); every new node on a CAD curve or surface is put
-// on it (its closest point there); the displacement of those boundary nodes is
+// on it (curving/place_on_volume_cad.h); the displacement of those boundary nodes is
 // carried into the volume by the elastic analogy (thesis Ch 4, Eq 4.13, in its
 // 3D form fem/tet_elasticity.h), solved only on the tetrahedra within `rings`
 // layers of those whose nodes moved, the rest of the mesh held.
@@ -22,9 +22,20 @@ struct VolumeCad {
   std::function<bool(int dim, int tag)> has_geometry;
   /// The closest points on entity (dim, tag) to the columns of x (3 by n).
   std::function<Eigen::Matrix3Xd(int dim, int tag, const Eigen::Matrix3Xd& x)> closest;
+  /// The points of entity (dim, tag) at the parameters (dim by n) (3 by n).
+  std::function<Eigen::Matrix3Xd(int dim, int tag, const Eigen::MatrixXd& params)> value;
+  /// The range of entity (dim, tag)'s parameters: dim by 2, lower then upper.
+  std::function<Eigen::MatrixXd(int dim, int tag)> bounds;
+  /// The derivatives at the parameters (dim by n): 3 dim by n, d/du then d/dv.
+  std::function<Eigen::MatrixXd(int dim, int tag, const Eigen::MatrixXd& params)> derivatives;
   /// The parameters (dim by n: u, or u and v) of the points x on entity (dim,
   /// tag); NaN where they cannot be found.
   std::function<Eigen::MatrixXd(int dim, int tag, const Eigen::Matrix3Xd& x)> parameters;
+  /// At the points x on entity (dim, tag): the unit normals of a surface, the
+  /// unit tangents of a curve (3 by n); NaN where they cannot be found. The
+  /// optimiser moves nodes on CAD in these planes and lines, projecting them
+  /// back once per round.
+  std::function<Eigen::Matrix3Xd(int dim, int tag, const Eigen::Matrix3Xd& x)> directions;
 };
 
 struct VolumeCurveOptions {
@@ -51,8 +62,10 @@ struct VolumeCurveOptions {
 };
 
 struct VolumeCurveResult {
-  /// Boundary nodes put on the CAD, and the largest distance one moved.
+  /// Boundary nodes put on the CAD (of them, by projection: where the
+  /// interpolated parameters failed), and the largest distance one moved.
   int placed = 0;
+  int projected = 0;
   double largest_move = 0;
   /// Tetrahedra and unknowns of the elastic solve.
   int region = 0;

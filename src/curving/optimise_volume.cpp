@@ -71,6 +71,29 @@ class Patch {
             radius_[it->second] = std::min(
                 radius_[it->second], 0.25 * (m.x.col(m.tet(i, e)) - m.x.col(m.tet(j, e))).norm());
       }
+    // Each sliding node's plane (surface) or line (curve) of motion, from the
+    // CAD's directions where it starts; a node whose direction the CAD cannot
+    // give is held.
+    slides_.assign(nodes_.size(), 0);
+    projector_.assign(nodes_.size(), Eigen::Matrix3d::Identity());
+    for (const auto& [entity, ks] : sliding_) {
+      Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(ks.size()));
+      for (std::size_t j = 0; j < ks.size(); ++j)
+        x.col(static_cast<Eigen::Index>(j)) = start_.segment<3>(3 * ks[j]);
+      const Eigen::Matrix3Xd d = cad.directions(entity.first, entity.second, x);
+      for (std::size_t j = 0; j < ks.size(); ++j) {
+        const Eigen::Vector3d n = d.col(static_cast<Eigen::Index>(j));
+        const int k = ks[j];
+        if (!n.allFinite()) {
+          projector_[k].setZero();
+          continue;
+        }
+        slides_[k] = 1;
+        projector_[k] = entity.first == 2
+                            ? Eigen::Matrix3d(Eigen::Matrix3d::Identity() - n * n.transpose())
+                            : Eigen::Matrix3d(n * n.transpose());
+      }
+    }
     // J0_e, the straight element's det J (6 volumes), the energy's unit: never
     // below a thousandth of the patch's mean, should a linear element be flat.
     double sum = 0;
@@ -117,18 +140,29 @@ class Patch {
     return z;
   }
 
-  // Puts z into the mesh, sliding nodes kept within their radius of where they
-  // started and projected onto their CAD (z updated). False, the mesh left as
-  // it was, if a projection leaves that radius (the node would leave its face).
-  bool place(Eigen::VectorXd& z) {
+  // Puts z into the mesh, each sliding node's move from where it started
+  // restricted to its tangent plane (surface) or line (curve) at the start and
+  // to its radius (z updated). Off the CAD by the surface's curvature times the
+  // move squared: snap() puts them back on it.
+  void place(Eigen::VectorXd& z) {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+      if (!slides_[k]) continue;
+      Eigen::Vector3d step = projector_[k] * (z.segment<3>(3 * k) - start_.segment<3>(3 * k));
+      if (step.norm() > radius_[k]) step *= radius_[k] / step.norm();
+      z.segment<3>(3 * k) = start_.segment<3>(3 * k) + step;
+    }
+    for (std::size_t k = 0; k < nodes_.size(); ++k) m_.x.col(nodes_[k]) = z.segment<3>(3 * k);
+  }
+
+  // The sliding nodes projected onto their CAD (one call per entity). False,
+  // the mesh left as it was, if a projection is not finite or lands beyond
+  // 1.5 radii (the node would have left its face).
+  bool snap() {
+    Eigen::VectorXd z = positions();
     for (const auto& [entity, ks] : sliding_) {
       Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(ks.size()));
-      for (std::size_t j = 0; j < ks.size(); ++j) {
-        Eigen::Vector3d step = z.segment<3>(3 * ks[j]) - start_.segment<3>(3 * ks[j]);
-        const double r = radius_[ks[j]];
-        if (step.norm() > r) step *= r / step.norm();
-        x.col(static_cast<Eigen::Index>(j)) = start_.segment<3>(3 * ks[j]) + step;
-      }
+      for (std::size_t j = 0; j < ks.size(); ++j)
+        x.col(static_cast<Eigen::Index>(j)) = z.segment<3>(3 * ks[j]);
       const Eigen::Matrix3Xd y = cad_.closest(entity.first, entity.second, x);
       if (y.cols() != x.cols() || !y.allFinite()) return false;
       for (std::size_t j = 0; j < ks.size(); ++j) {
@@ -225,7 +259,10 @@ class Patch {
   Eigen::MatrixXi local_;  // element node -> movable node index, or -1
   Eigen::VectorXd start_;  // the movable nodes where the patch started
   std::vector<double> radius_;
-  std::vector<double> straight_;  // J0_e: det J of each element's corners, at the start
+  std::vector<double> straight_;
+  std::vector<char> slides_;                // a node on CAD, moving in its plane or line
+  std::vector<Eigen::Matrix3d> projector_;  // onto that plane or line (identity inside)  // J0_e:
+                                            // det J of each element's corners, at the start
 };
 
 // L-BFGS with backtracking (Nocedal & Wright 2006, Alg 7.5), the iterate
@@ -262,7 +299,7 @@ void minimise(Patch& patch, double barrier, double h, int iterations) {
     bool moved = false;
     for (int tries = 0; tries < 30; ++tries, step *= 0.5) {
       Eigen::VectorXd trial = z + step * dir;
-      if (!patch.place(trial)) continue;
+      patch.place(trial);
       const double ft = patch.energy(barrier, &trial_g);
       if (std::isfinite(ft) && ft <= f + 1e-4 * step * g.dot(dir)) {
         const Eigen::VectorXd s = trial - z, y = trial_g - g;
@@ -281,7 +318,7 @@ void minimise(Patch& patch, double barrier, double h, int iterations) {
     }
     if (!moved) {
       Eigen::VectorXd back = z;
-      patch.place(back);  // where it was: within every radius
+      patch.place(back);  // where it was
       return;
     }
   }
@@ -356,11 +393,17 @@ VolumeOptimiseResult optimise_volume(VolumeMesh& m, const VolumeCad& cad, MeshVa
     // The moving barrier of Toulorge et al. (2013): each round's barrier just
     // below the lowest det J_q / mean_e, so a round never lowers it and raising
     // it lowers the energy; rounds while it rises.
+    Patch::State on_cad = saved;
     for (int round = 0; round < 6; ++round) {
       const double lo = patch.lowest_normalised();
       const double mean = patch.determinants().second;
       const double barrier = lo - 0.1 * std::max(std::abs(lo), 0.05);
       minimise(patch, barrier, std::cbrt(mean), o.iterations);
+      if (!patch.snap()) {  // back to the last state on the CAD
+        patch.restore(on_cad);
+        break;
+      }
+      on_cad = patch.state();
       const double now = patch.lowest_normalised();
       if (now < lo + 0.01 * std::max(std::abs(lo), 0.05)) break;
     }

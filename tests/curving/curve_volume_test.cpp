@@ -116,6 +116,36 @@ VolumeCad dome(double a) {
   cad.parameters = [](int, int, const Eigen::Matrix3Xd& x) -> Eigen::MatrixXd {
     return x.topRows<2>();
   };
+  cad.value = [a](int, int, const Eigen::MatrixXd& uv) {
+    Eigen::Matrix3Xd y(3, uv.cols());
+    for (Eigen::Index k = 0; k < uv.cols(); ++k) {
+      const double x = uv(0, k), v = uv(1, k);
+      y.col(k) << x, v, 1 + a * x * (1 - x) * v * (1 - v);
+    }
+    return y;
+  };
+  cad.bounds = [](int, int) {
+    Eigen::MatrixXd b(2, 2);
+    b << 0, 1, 0, 1;
+    return b;
+  };
+  cad.derivatives = [a](int, int, const Eigen::MatrixXd& uv) {
+    Eigen::MatrixXd d(6, uv.cols());
+    for (Eigen::Index k = 0; k < uv.cols(); ++k) {
+      const double u = uv(0, k), v = uv(1, k);
+      d.col(k) << 1, 0, a * (1 - 2 * u) * v * (1 - v), 0, 1, a * u * (1 - u) * (1 - 2 * v);
+    }
+    return d;
+  };
+  cad.directions = [a](int, int, const Eigen::Matrix3Xd& x) {
+    Eigen::Matrix3Xd n(3, x.cols());
+    for (Eigen::Index k = 0; k < x.cols(); ++k) {
+      const double u = x(0, k), v = x(1, k);
+      n.col(k) = Eigen::Vector3d(-a * (1 - 2 * u) * v * (1 - v), -a * u * (1 - u) * (1 - 2 * v), 1)
+                     .normalized();
+    }
+    return n;
+  };
   return cad;
 }
 

@@ -53,11 +53,12 @@ void run_volume(Context& ctx, const CurveOptions& o) {
   const VolumeCurveResult r = curve_volume(m, cad, v);
   ctx.fields.clear();
   ctx.log.info(
-      "curve: p = {}, {} tetrahedra: {} boundary nodes put on the CAD (largest move {:.3g}), "
+      "curve: p = {}, {} tetrahedra: {} boundary nodes put on the CAD ({} by projection; "
+      "largest move {:.3g}), "
       "elastic solve on {} tetrahedra ({} unknowns); {:.3f} s placing, {:.3f} s solving, {:.3f} "
       "s certifying",
-      v.order, m.num_tetrahedra(), r.placed, r.largest_move, r.region, r.unknowns, r.seconds_place,
-      r.seconds_solve, r.seconds_certify);
+      v.order, m.num_tetrahedra(), r.placed, r.projected, r.largest_move, r.region, r.unknowns,
+      r.seconds_place, r.seconds_solve, r.seconds_certify);
   if (r.patches > 0)
     ctx.log.info("  optimiser: {} of {} patches kept, worst minJ/maxJ {:.4f} -> {:.4f} ({:.3f} s)",
                  r.optimised, r.patches, r.worst_before_optimiser, r.validity.worst,
@@ -69,6 +70,7 @@ void run_volume(Context& ctx, const CurveOptions& o) {
                  {"worst", r.validity.worst},
                  {"invalid", r.validity.invalid},
                  {"placed", r.placed},
+                 {"projected", r.projected},
                  {"region", r.region},
                  {"unknowns", r.unknowns},
                  {"seconds_place", r.seconds_place},
