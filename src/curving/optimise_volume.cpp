@@ -394,7 +394,7 @@ VolumeOptimiseResult optimise_volume(VolumeMesh& m, const VolumeCad& cad, MeshVa
     // below the lowest det J_q / mean_e, so a round never lowers it and raising
     // it lowers the energy; rounds while it rises.
     Patch::State on_cad = saved;
-    for (int round = 0; round < 6; ++round) {
+    for (int round = 0; round < o.rounds; ++round) {
       const double lo = patch.lowest_normalised();
       const double mean = patch.determinants().second;
       const double barrier = lo - 0.1 * std::max(std::abs(lo), 0.05);
@@ -405,7 +405,7 @@ VolumeOptimiseResult optimise_volume(VolumeMesh& m, const VolumeCad& cad, MeshVa
       }
       on_cad = patch.state();
       const double now = patch.lowest_normalised();
-      if (now < lo + 0.01 * std::max(std::abs(lo), 0.05)) break;
+      if (now < lo + o.round_gain * std::max(std::abs(lo), 0.05)) break;
     }
     // Kept only if certified better: fewer invalid elements, or as many and a
     // better worst.

@@ -16,8 +16,13 @@ struct VolumeOptimiseOptions {
   double threshold = 0.3;
   /// A patch is its poor elements grown by this many layers (through shared corners).
   int rings = 1;
-  /// Descent iterations per patch.
+  /// L-BFGS iterations per round, and barrier rounds per patch: rounds go on
+  /// while the patch's lowest det J / J0 rises by round_gain (relative, at
+  /// least of 0.05). 20 rounds at 0.001 lift the corpus's coarse ellipsoid at
+  /// p = 3 from 0.071 (6 rounds at 0.01) to 0.13, in 4.0 s instead of 1.6.
   int iterations = 60;
+  int rounds = 20;
+  double round_gain = 0.001;
   /// Move the corners (vertices) of the linear mesh inside the volume too.
   bool move_vertices = true;
   /// Slide the linear mesh's vertices on CAD surfaces and curves too (else they
