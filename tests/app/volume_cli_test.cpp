@@ -1,0 +1,84 @@
+// Tetrahedral meshes through the command line (issue 24), as a user runs them.
+#include <gmsh.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include "../support/gmsh_session.h"
+#include "../support/run_command.h"
+#include "../support/temp_dir.h"
+#include "gmsh/read_volume_model.h"
+#include "quality/volume_validity.h"
+
+using homesh::test::geo;
+using homesh::test::run_homesh;
+using homesh::test::TempDir;
+
+TEST_CASE("curve on a ball in a box: tetrahedra on the sphere, certified valid, groups kept",
+          "[app][volume]") {
+  const TempDir dir;
+  const std::string out = dir / "ball.msh";
+  const auto r = run_homesh(geo + "ball_in_box.geo -m curve:p=3 -m quality:measures=Q10 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("validity: 0 invalid of"));
+  CHECK_THAT(r.output, Catch::Contains("tetrahedra"));
+  CHECK_THAT(r.output, Catch::Contains("Q10 "));
+  homesh::test::GmshSession session;
+  gmsh::open(out);
+  const homesh::VolumeMesh m = homesh::gmsh_adapter::read_volume_model(out);
+  CHECK(m.order == 3);
+  CHECK(m.num_tetrahedra() > 1000);
+  REQUIRE(m.physicals.size() == 2);
+  // Every node on the sphere's surface is on the sphere.
+  int on_ball = 0;
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.node_class[i].dim == 2 && m.x.col(i).norm() < 1.5) {
+      ++on_ball;
+      CHECK(m.x.col(i).norm() == Approx(1.0).margin(1e-9));
+    }
+  CHECK(on_ball > 500);
+  const homesh::MeshValidity v = homesh::volume_validity(m);
+  CHECK(v.invalid == 0);
+  CHECK(v.worst > 0.5);
+  // The views: the certified minJ/maxJ and Q10's two.
+  std::vector<int> views;
+  gmsh::view::getTags(views);
+  CHECK(views.size() == 3);
+}
+
+TEST_CASE("tetrahedra: stages that do not take them, and curve without CAD, refuse by name",
+          "[app][volume]") {
+  const TempDir dir;
+  const std::string mesh = dir / "ball_linear.msh", out = dir / "out.msh";
+  REQUIRE(run_homesh(geo + "ball_in_box.geo -m mesh:size_max=1 " + mesh).exit_code == 0);
+  auto r = run_homesh(mesh + " -m rotate " + out);
+  CHECK(r.exit_code != 0);
+  CHECK_THAT(r.output, Catch::Contains("stage 'rotate' does not handle tetrahedra yet (mesh has"));
+  CHECK_THAT(r.output, Catch::Contains("'Tetrahedron 4'"));
+  r = run_homesh(mesh + " -m curve:p=2 " + out);
+  CHECK(r.exit_code != 0);
+  CHECK_THAT(r.output, Catch::Contains("has tetrahedra but no CAD"));
+  r = run_homesh(mesh + " -m order:p=6 " + out);
+  CHECK(r.exit_code != 0);
+  CHECK_THAT(r.output, Catch::Contains("tetrahedra of order 1 to 5"));
+  // order and quality take the bare mesh.
+  r = run_homesh(mesh + " -m order:p=4 -m quality " + out);
+  INFO(r.output);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("validity: 0 invalid of"));
+}
+
+TEST_CASE("tetrahedra to .vtu: Lagrange tetrahedra with the certified minJ/maxJ", "[app][volume]") {
+  const TempDir dir;
+  const std::string out = dir / "ball.vtu";
+  const auto r = run_homesh(geo + "ball_in_box.geo -m mesh:size_max=1 -m curve:p=2 " + out);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(text, Catch::Contains("Name=\"homesh: certified minJ/maxJ\""));
+  CHECK_THAT(text, Catch::Contains("NumberOfPoints="));
+}
