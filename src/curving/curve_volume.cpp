@@ -12,7 +12,7 @@
 #include "core/raise_volume_order.h"
 #include "curving/optimise_volume.h"
 #include "curving/place_on_volume_cad.h"
-#include "element/tet_reference_nodes.h"
+#include "element/barycentric_indices.h"
 #include "fem/tet_elasticity.h"
 #include "quality/volume_validity.h"
 
@@ -50,15 +50,12 @@ void mark_boundary_faces(const VolumeMesh& m, std::vector<char>& on) {
       ++count;
       where = 4 * e + f;
     }
-  const Eigen::Matrix3Xi ijl = tetrahedron_node_indices(m.order);
+  const Eigen::MatrixXi b = barycentric_indices(4, m.order);
   for (const auto& [corners, use] : faces) {
     if (use.first != 1) continue;
     const int e = use.second / 4, f = use.second % 4;
-    for (Eigen::Index k = 0; k < ijl.cols(); ++k) {
-      const int b[4] = {m.order - ijl(0, k) - ijl(1, k) - ijl(2, k), ijl(0, k), ijl(1, k),
-                        ijl(2, k)};
-      if (b[f] == 0) on[m.tet(k, e)] = 1;
-    }
+    for (Eigen::Index k = 0; k < b.cols(); ++k)
+      if (b(f, k) == 0) on[m.tet(k, e)] = 1;
   }
 }
 

@@ -430,18 +430,7 @@ VolumeOptimiseResult optimise_volume(VolumeMesh& m, const VolumeCad& cad, MeshVa
       validity.converged[e] = bounds[k].converged;
     }
   }
-  // The summary counts again.
-  validity.invalid = validity.unconverged = 0;
-  validity.worst = 1;
-  validity.worst_element = -1;
-  for (int e = 0; e < n; ++e) {
-    validity.invalid += validity.min_det(e) > 0 ? 0 : 1;
-    validity.unconverged += validity.converged[e] ? 0 : 1;
-    if (validity.worst_element < 0 || validity.ratio(e) < validity.worst) {
-      validity.worst = validity.ratio(e);
-      validity.worst_element = e;
-    }
-  }
+  count_validity(validity);
   r.after = validity.worst;
   return r;
 }

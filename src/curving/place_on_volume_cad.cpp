@@ -6,30 +6,12 @@
 #include <map>
 
 #include "core/error.h"
-#include "element/reference_nodes.h"
+#include "element/barycentric_indices.h"
 
 namespace homesh {
 namespace {
 
 using Entity2 = std::pair<int, int>;  // (dim, tag)
-
-// Barycentric indices (summing to p) of the nodes of a line (2 rows) or triangle (3 rows).
-Eigen::MatrixXi barycentric(int corners, int p) {
-  if (corners == 3) {
-    const Eigen::Matrix2Xi ij = reference_node_indices(p);
-    Eigen::MatrixXi b(3, ij.cols());
-    for (Eigen::Index k = 0; k < ij.cols(); ++k)
-      b.col(k) << p - ij(0, k) - ij(1, k), ij(0, k), ij(1, k);
-    return b;
-  }
-  const Eigen::RowVectorXd s = reference_line_nodes(p);
-  Eigen::MatrixXi b(2, s.size());
-  for (Eigen::Index k = 0; k < s.size(); ++k) {
-    const int t = static_cast<int>(std::lround(s(k) * p));
-    b.col(k) << p - t, t;
-  }
-  return b;
-}
 
 class Placer {
  public:
@@ -55,7 +37,7 @@ class Placer {
   void by_parameters(const Eigen::MatrixXi& conn, const std::vector<int>& entity, int corners,
                      int dim) {
     if (conn.cols() == 0) return;
-    const Eigen::MatrixXi b = barycentric(corners, m_.order);
+    const Eigen::MatrixXi b = barycentric_indices(corners, m_.order);
     // The corners' parameters on each element's entity: the node's own, else asked.
     std::map<Entity2, std::vector<int>> ask;
     for (Eigen::Index e = 0; e < conn.cols(); ++e) {

@@ -145,14 +145,13 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
     quad_sampling.emplace(p, lattice, ElementShape::quadrilateral);
   MeshQuality r;
   MeshValidity& v = r.validity;
-  std::vector<char> valid, converged;
+  std::vector<char> converged;
   if (bounds) {
     v.ratio.resize(n);
     v.min_det.resize(n);
     v.relative_tolerance = bounds->relative_tolerance;
     v.max_subdivisions = bounds->max_subdivisions;
-    valid.resize(static_cast<std::size_t>(n));
-    converged.resize(valid.size());
+    converged.resize(static_cast<std::size_t>(n));
   }
   r.measures.resize(qs.size());
   for (auto& out : r.measures) {
@@ -175,7 +174,6 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
         if (still) {
           v.ratio(e) = known->ratio(e);
           v.min_det(e) = known->min_det(e);
-          valid[e] = known->min_det(e) > 0;  // valid_certified is min_lower > 0
           converged[e] = known->converged[e];
           continue;
         }
@@ -187,7 +185,6 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
           const JacobianBounds b = quad_jacobian_bounds(Xq, p, *bounds);
           v.ratio(e) = scaled_jacobian_ratio(b);
           v.min_det(e) = b.min_lower;
-          valid[e] = b.valid_certified;
           converged[e] = b.converged;
         }
         if (quad_sampling) quad_sampling->measure(qs, ref, Xq, e, quad_work, r.measures);
@@ -204,20 +201,14 @@ MeshQuality sweep(const Mesh& m, const std::vector<const Measure*>& qs, int latt
         const JacobianBounds b = jacobian_bounds(U, V, p, *bounds);
         v.ratio(e) = scaled_jacobian_ratio(b);
         v.min_det(e) = b.min_lower;
-        valid[e] = b.valid_certified;
         converged[e] = b.converged;
       }
       if (sampling) sampling->measure(qs, ref, X, U, V, e, work, r.measures);
     }
   }
-  if (bounds) v.converged = std::move(converged);
-  for (int e = 0; bounds && e < n; ++e) {
-    v.invalid += valid[e] ? 0 : 1;
-    v.unconverged += v.converged[e] ? 0 : 1;
-    if (v.worst_element < 0 || v.ratio(e) < v.worst) {
-      v.worst = v.ratio(e);
-      v.worst_element = e;
-    }
+  if (bounds) {
+    v.converged = std::move(converged);
+    count_validity(v);
   }
   return r;
 }

@@ -11,6 +11,20 @@ bool equal(const Eigen::MatrixXi& a, const Eigen::MatrixXi& b) {
 
 }  // namespace
 
+void count_validity(MeshValidity& v) {
+  v.invalid = v.unconverged = 0;
+  v.worst = 1.0;
+  v.worst_element = -1;
+  for (Eigen::Index e = 0; e < v.ratio.size(); ++e) {
+    v.invalid += v.min_det(e) > 0 ? 0 : 1;
+    v.unconverged += v.converged[static_cast<std::size_t>(e)] ? 0 : 1;
+    if (v.worst_element < 0 || v.ratio(e) < v.worst) {
+      v.worst = v.ratio(e);
+      v.worst_element = static_cast<int>(e);
+    }
+  }
+}
+
 MeshValidity mesh_validity(const Mesh& m, const BoundsOptions& opt) {
   return mesh_quality(m, {}, 0, Reference::ideal, opt).validity;
 }

@@ -37,6 +37,10 @@ struct MeshValidity {
   int max_subdivisions = 0;
 };
 
+/// Sets v's invalid, unconverged, worst and worst_element from its per-element
+/// min_det (valid: > 0, as JacobianBounds::valid_certified), converged and ratio.
+void count_validity(MeshValidity& v);
+
 /// Bounds of det J of every triangle and quadrilateral of m.
 MeshValidity mesh_validity(const Mesh& m, const BoundsOptions& opt = {});
 

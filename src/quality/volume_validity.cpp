@@ -18,7 +18,6 @@ MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt, int 
   v.converged.assign(static_cast<std::size_t>(n), 0);
   v.relative_tolerance = opt.relative_tolerance;
   v.max_subdivisions = opt.max_subdivisions;
-  std::vector<char> valid(static_cast<std::size_t>(n));
 #pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
   {
     Eigen::Matrix3Xd X(3, m.tet.rows());
@@ -28,18 +27,10 @@ MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt, int 
       const JacobianBounds b = tetrahedron_jacobian_bounds(X, m.order, opt);
       v.ratio(e) = scaled_jacobian_ratio(b);
       v.min_det(e) = b.min_lower;
-      valid[e] = b.valid_certified;
       v.converged[e] = b.converged;
     }
   }
-  for (int e = 0; e < n; ++e) {
-    v.invalid += valid[e] ? 0 : 1;
-    v.unconverged += v.converged[e] ? 0 : 1;
-    if (v.worst_element < 0 || v.ratio(e) < v.worst) {
-      v.worst = v.ratio(e);
-      v.worst_element = e;
-    }
-  }
+  count_validity(v);
   return v;
 }
 

@@ -26,6 +26,26 @@ bool is_measure(const std::string& name) {
   });
 }
 
+// Each measure's views (element minimum, node values) and results (its minimum
+// and mean over the elements); returns the histogram lines, minJ/maxJ's first.
+std::vector<std::string> measure_fields(Context& ctx, const MeshValidity& v,
+                                        const std::vector<const Measure*>& chosen,
+                                        std::vector<MeshMeasure>& measured) {
+  std::vector<std::string> histograms = {histogram_line("minJ/maxJ", v.ratio)};
+  for (std::size_t j = 0; j < chosen.size(); ++j) {
+    const std::string& name = chosen[j]->name;
+    MeshMeasure& r = measured[j];
+    histograms.push_back(histogram_line(name, r.element_min));
+    ctx.results[name + "_min"] = r.element_min.minCoeff();
+    ctx.results[name + "_mean"] = r.element_min.mean();
+    ctx.set_field(
+        {element_field_name(*chosen[j]), Field::Kind::Element, r.element_min.transpose()});
+    ctx.set_field(
+        {node_field_name(*chosen[j]), Field::Kind::ElementNode, std::move(r.node_values)});
+  }
+  return histograms;
+}
+
 // A view of the 2D elements whose certified minJ/maxJ is below `threshold`
 // (their value on every node), so Gmsh's GUI shows where they are.
 void add_poor_elements(Context& ctx, const MeshValidity& v, double threshold) {
@@ -71,18 +91,7 @@ void run_volume(Context& ctx, const QualityOptions& o) {
   for (std::size_t k = 0; k < poor.elements.size(); ++k)
     poor.values.col(static_cast<Eigen::Index>(k)).setConstant(v.ratio(poor.elements[k]));
   ctx.set_field(std::move(poor));
-  std::vector<std::string> histograms = {histogram_line("minJ/maxJ", v.ratio)};
-  for (std::size_t j = 0; j < chosen.size(); ++j) {
-    const std::string& name = chosen[j]->name;
-    MeshMeasure& r = measured[j];
-    histograms.push_back(histogram_line(name, r.element_min));
-    ctx.results[name + "_min"] = r.element_min.minCoeff();
-    ctx.results[name + "_mean"] = r.element_min.mean();
-    ctx.set_field(
-        {element_field_name(*chosen[j]), Field::Kind::Element, r.element_min.transpose()});
-    ctx.set_field(
-        {node_field_name(*chosen[j]), Field::Kind::ElementNode, std::move(r.node_values)});
-  }
+  const std::vector<std::string> histograms = measure_fields(ctx, v, chosen, measured);
   ctx.log.info(
       "quality: {} tetrahedra of order {} (bounds and measures {:.3f} s on {} thread(s); the "
       "measures with d = 3, W from the regular tetrahedron)",
@@ -117,18 +126,7 @@ void run(Context& ctx, const QualityOptions& o) {
                  {"worst", v.worst},
                  {"worst_element", static_cast<int>(m.triangle_tag(v.worst_element))},
                  {"worst_triangle", static_cast<int>(m.triangle_tag(v.worst_element))}};
-  std::vector<std::string> histograms = {histogram_line("minJ/maxJ", v.ratio)};
-  for (std::size_t j = 0; j < chosen.size(); ++j) {
-    const std::string& name = chosen[j]->name;
-    MeshMeasure& r = quality.measures[j];
-    histograms.push_back(histogram_line(name, r.element_min));
-    ctx.results[name + "_min"] = r.element_min.minCoeff();
-    ctx.results[name + "_mean"] = r.element_min.mean();
-    ctx.set_field(
-        {element_field_name(*chosen[j]), Field::Kind::Element, r.element_min.transpose()});
-    ctx.set_field(
-        {node_field_name(*chosen[j]), Field::Kind::ElementNode, std::move(r.node_values)});
-  }
+  const std::vector<std::string> histograms = measure_fields(ctx, v, chosen, quality.measures);
   add_poor_elements(ctx, v, o.poor);
   const auto t2 = std::chrono::steady_clock::now();
   const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
