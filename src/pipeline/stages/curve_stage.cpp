@@ -273,6 +273,11 @@ Stage curve_stage() {
       integer(0, 100),
       "tetrahedra: the optimiser's patches are its poor elements and this many layers");
   t.add(
+      "tet_solver", [](CurveOptions& o) -> std::string& { return o.volume.solver.method; },
+      one_of(linear_solver_names()),
+      "tetrahedra: the elastic solve's linear solver: " + names_text(linear_solver_names()) +
+          " (cg: Jacobi-preconditioned, to 1e-6)");
+  t.add(
       "tet_nu", [](CurveOptions& o) -> double& { return o.volume.nu; }, real(0, 0.5, "[)"),
       "tetrahedra: Poisson's ratio of the elastic analogy");
   add_analogy_options(
