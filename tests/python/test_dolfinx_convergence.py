@@ -70,3 +70,17 @@ def test_curved_quadrilaterals_converge_at_rate_3_straight_ones_at_2(session):
     assert curved_rates[-1] > 2.6, f"errors {curved}, rates {curved_rates}"
     assert 1.5 < straight_rates[-1] < 2.5, f"errors {straight}, rates {straight_rates}"
     assert curved[-1] < straight[-1] / 2
+
+
+def test_curved_tetrahedra_converge_at_rate_3_straight_ones_stall(session):
+    # Issue 24: the unit ball cut out of [-1.5, 1.5]^3 in Gmsh's tetrahedra, curved by homesh
+    # at p = 2, read by DOLFINx 0.5 (10-node tetrahedra, element P2). Measured on sizes 0.35,
+    # 0.25, 0.18: rates 3.23, 2.91 curved, 2.79, 2.18 straight; errors 2.6e-3 against 6.0e-3
+    # on the finest mesh.
+    hs, curved = zip(*(dolfinx_poisson.solve_ball(2, s, True) for s in dolfinx_poisson.SIZES[1:]))
+    _, straight = zip(*(dolfinx_poisson.solve_ball(2, s, False) for s in dolfinx_poisson.SIZES[1:]))
+    curved_rates = dolfinx_poisson.rates(hs, curved)
+    straight_rates = dolfinx_poisson.rates(hs, straight)
+    assert curved_rates[-1] > 2.6, f"errors {curved}, rates {curved_rates}"
+    assert 1.5 < straight_rates[-1] < 2.5, f"errors {straight}, rates {straight_rates}"
+    assert curved[-1] < straight[-1] / 2
