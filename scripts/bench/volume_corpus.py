@@ -67,8 +67,8 @@ METHODS = {
     "gmsh optimize": "HighOrder",
     "gmsh fastcurving": "HighOrderFastCurving",
 }
-FIELDS = ["case", "tetrahedra", "worst_shape", "wall_caps", "p", "method", "status", "invalid", "worst", "seconds",
-          "homesh_invalid", "homesh_worst", "seconds_place", "seconds_solve", "unknowns",
+FIELDS = ["case", "tetrahedra", "worst_shape", "wall_caps", "p", "method", "status", "invalid",
+          "worst", "seconds", "homesh_invalid", "homesh_worst", "seconds_place", "seconds_solve", "unknowns",
           "region", "peak_mb", "base_mb", "error"]
 
 
@@ -226,58 +226,85 @@ def analyse(rows, mine="homesh"):
         best = max(good, key=lambda r: r["worst"]) if good else None
         e = dict(case=key[0], p=key[1], h=h, best=best, gmsh=gm, valid=valid(h),
                  setorder=next((r for r in gm if r["method"] == "gmsh setOrder"), None),
+                 timeouts=[r["method"] for r in gm if r["status"] == "timeout"],
                  tets={r["tetrahedra"] for r in these if r["tetrahedra"] is not None})
+        # Quality: None where no Gmsh method ran; a homesh mesh that is not valid misses.
         e["ge_best"] = None if not gm else e["valid"] and (best is None
                                                           or h["worst"] >= best["worst"])
-        e["ratio"] = h["seconds"] / best["seconds"] if (e["valid"] and best) else None
-        e["time_ok"] = None if best is None else (e["ratio"] is not None and e["ratio"] <= 1)
+        # Time: None where Gmsh has no valid method; the ratio shown even where homesh's
+        # mesh is not valid, which misses.
+        e["ratio"] = (h["seconds"] / best["seconds"]
+                      if best and h["seconds"] is not None else None)
+        e["time_ok"] = None if best is None else (e["valid"] and e["ratio"] <= 1)
         out.append(e)
     return out
 
 
-def targets(E):
-    """The three targets' counts, misses and worst cases, as text lines."""
-    n = len(E)
+def where(e):
+    return f"{e['case']} p={e['p']}"
+
+
+def target_invalid(E):
     bad = [e for e in E if not e["valid"]]
-    lines = [f"0 invalid: {n - len(bad)}/{n}" + (
-        "; misses: " + ", ".join(f"{e['case']} p={e['p']} ({homesh_short(e['h'])})"
-                                 for e in bad) if bad else "")]
+    text = f"0 invalid: {len(E) - len(bad)}/{len(E)}"
+    if bad:
+        most = max(bad, key=lambda e: (e["h"]["invalid"] or 0, -(e["h"]["worst"] or 0)))
+        text += (f"; worst: {where(most)} ({homesh_short(most['h'])}); misses: "
+                 + ", ".join(f"{where(e)} ({homesh_short(e['h'])})" for e in bad))
+    return text
+
+
+def target_quality(E):
     ran = [e for e in E if e["ge_best"] is not None]
     miss = [e for e in ran if not e["ge_best"]]
-    low = min((e for e in E if e["valid"]), key=lambda e: e["h"]["worst"], default=None)
     text = f"worst minJ/maxJ >= Gmsh's best valid: {len(ran) - len(miss)}/{len(ran)}"
+    low = min((e for e in E if e["valid"]), key=lambda e: e["h"]["worst"], default=None)
     if low:
-        text += f"; homesh's lowest: {low['case']} p={low['p']} {low['h']['worst']:.3f}"
-    if miss:
-        text += "; misses (homesh / Gmsh best): " + ", ".join(
-            f"{e['case']} p={e['p']} {quality_ratio(e)}" for e in miss)
-    lines.append(text)
+        text += f"; homesh's lowest valid: {where(low)} {low['h']['worst']:.3f}"
+    lower = [e for e in miss if e["valid"]]
+    if lower:
+        text += "; lower than Gmsh's (homesh / Gmsh): " + ", ".join(
+            f"{where(e)} {e['h']['worst']:.3f} / {e['best']['worst']:.3f} = "
+            f"{e['h']['worst'] / e['best']['worst']:.2f}" for e in lower)
+    invalid = [e for e in miss if not e["valid"]]
+    if invalid:
+        beaten = [e for e in invalid if e["best"]]
+        text += (f"; {len(invalid)} misses where homesh is not valid, {len(beaten)} of them "
+                 f"where Gmsh has a valid method")
+        if beaten:
+            text += " (" + ", ".join(f"{where(e)}: {e['best']['method'].replace('gmsh ', '')} "
+                                     f"{e['best']['worst']:.3f}" for e in beaten) + ")"
+    return text
+
+
+def target_time(E):
     timed = [e for e in E if e["time_ok"] is not None]
     slow = [e for e in timed if not e["time_ok"]]
     text = f"time <= Gmsh's best valid method's: {len(timed) - len(slow)}/{len(timed)}"
-    if len(timed) < n:
-        text += f" ({n - len(timed)} runs without a valid Gmsh method)"
-    top = max((e for e in timed if e["ratio"] is not None), key=lambda e: e["ratio"],
-              default=None)
+    if len(timed) < len(E):
+        text += f" ({len(E) - len(timed)} runs without a valid Gmsh method)"
+    top = max((e for e in timed if e["valid"]), key=lambda e: e["ratio"], default=None)
     if top:
-        text += f"; largest ratio: {top['case']} p={top['p']} {top['ratio']:.2f}x"
-    if slow:
-        text += "; misses (time ratio): " + ", ".join(
-            f"{e['case']} p={e['p']} " + (f"{e['ratio']:.2f}x" if e["ratio"] is not None
-                                          else "homesh not valid") for e in slow)
-    lines.append(text)
-    mismatch = [e["case"] for e in E if len(e["tets"]) > 1]
+        text += f"; largest ratio (homesh valid): {where(top)} {top['ratio']:.2f}x"
+    slower = [e for e in slow if e["valid"]]
+    if slower:
+        text += "; slower: " + ", ".join(
+            f"{where(e)} {e['ratio']:.2f}x (vs {e['best']['method'].replace('gmsh ', '')}"
+            + (f"; {', '.join(m.replace('gmsh ', '') for m in e['timeouts'])} timed out"
+               if e["timeouts"] else "") + ")" for e in slower)
+    invalid = [e for e in slow if not e["valid"]]
+    if invalid:
+        text += f"; {len(invalid)} misses where homesh is not valid"
+    return text
+
+
+def targets(E):
+    """The three targets' counts, misses and worst cases, as text lines."""
+    lines = [target_invalid(E), target_quality(E), target_time(E)]
+    mismatch = sorted({e["case"] for e in E if len(e["tets"]) > 1})
     if mismatch:
-        lines.append("tetrahedron counts differ between methods: " + ", ".join(
-            sorted(set(mismatch))))
+        lines.append("tetrahedron counts differ between methods: " + ", ".join(mismatch))
     return lines
-
-
-def quality_ratio(e):
-    h, b = e["h"], e["best"]
-    if not e["valid"]:
-        return f"homesh not valid ({homesh_short(h)}) vs {b['worst']:.3f}" if b else "not valid"
-    return f"{h['worst']:.3f} / {b['worst']:.3f} = {h['worst'] / b['worst']:.2f}"
 
 
 def homesh_short(h):
@@ -305,9 +332,11 @@ def markdown(E):
         tets = "/".join(str(int(t)) for t in sorted(e["tets"]))
         best = (f"{b['method'].replace('gmsh ', '')}: {b['worst']:.3f} / {b['seconds']:.3g} s"
                 if b else "none valid")
+        if e["timeouts"]:
+            best += " (timeout: " + ", ".join(m.replace("gmsh ", "") for m in e["timeouts"]) + ")"
         ratio = f"{e['ratio']:.2f}" if e["ratio"] is not None else "-"
         if e["time_ok"] is False:
-            ratio = f"**{ratio}**"
+            ratio = f"**{ratio}**" + ("" if e["valid"] else " (not valid)")
         so = f"{int(s['invalid'])} / {s['worst']:.3f}" if s and s["worst"] is not None else "-"
         cw = f"{h['homesh_worst']:.3f}" if h["homesh_worst"] is not None else "-"
         lines.append(f"| {e['case']} | {tets} | {e['p']} | {run_cell(h)} | {mb(h)} | {cw} | "
@@ -371,10 +400,11 @@ def plot(rows, E, path):
     a.set_title("Worst minJ/maxJ per case and order")
     a.legend(fontsize=7, ncol=3)
     ratios = [e["ratio"] if e["ratio"] is not None else float("nan") for e in E]
-    b.bar(list(x), ratios, color=["tab:green" if e["time_ok"] else "tab:red" for e in E])
+    b.bar(list(x), ratios, color=["tab:grey" if not e["valid"] else
+                                  ("tab:green" if e["time_ok"] else "tab:red") for e in E])
     b.axhline(1, color="k", lw=0.8)
     b.set_yscale("log")
-    b.set_ylabel("homesh's time / Gmsh's best valid method's")
+    b.set_ylabel("homesh's time / Gmsh's best valid method's\n(grey: homesh not valid)")
     b.set_xticks(list(x))
     b.set_xticklabels([f"{e['case']} p{e['p']}" for e in E], rotation=75, fontsize=7)
     fig.suptitle("Volume corpus (issue 24)\n" + "\n".join(t[:160] for t in targets(E)[:3]),

@@ -13,7 +13,7 @@ namespace homesh {
 
 struct VolumeOptimiseOptions {
   /// Elements of certified minJ/maxJ below this are optimised.
-  double threshold = 0.3;
+  double threshold = 0.5;
   /// A patch is its poor elements grown by this many layers (through shared corners).
   int rings = 1;
   /// L-BFGS iterations per round, and barrier rounds per patch: rounds go on
