@@ -348,9 +348,15 @@ def mb(r):
     return f"{r['peak_mb']:.0f}" if r and r["peak_mb"] is not None else "-"
 
 
+def method_order(rows):
+    """The methods of the rows, homesh's (the defaults, then the variants) first."""
+    return sorted(dict.fromkeys(r["method"] for r in rows),
+                  key=lambda m: (m != "homesh", not m.startswith("homesh")))
+
+
 def all_methods(rows, E):
     """Every method's invalid / worst / seconds per case and p."""
-    methods = list(dict.fromkeys(r["method"] for r in rows))
+    methods = method_order(rows)
     lines = ["| case | p | " + " | ".join(methods) + " |", "|---|---|" + "---|" * len(methods)]
     for e in E:
         these = {r["method"]: r for r in rows if (r["case"], r["p"]) == (e["case"], e["p"])}
@@ -378,7 +384,7 @@ def plot(rows, E, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    methods = list(dict.fromkeys(r["method"] for r in rows))
+    methods = method_order(rows)
     x = range(len(E))
     fig, (a, b) = plt.subplots(2, 1, figsize=(max(10, 0.42 * len(E) + 3), 9), sharex=True)
     floor = -0.25
