@@ -27,4 +27,13 @@ void ensure_entities(const std::vector<Entity>& entities,
   }
 }
 
+std::size_t add_point_elements(const std::vector<int>& node, const std::vector<int>& entity) {
+  if (!node.empty()) {
+    Eigen::MatrixXi conn(1, static_cast<Eigen::Index>(node.size()));
+    for (std::size_t k = 0; k < node.size(); ++k) conn(0, static_cast<Eigen::Index>(k)) = node[k];
+    add_elements(15, conn, entity, [](int k) { return 1 + static_cast<std::size_t>(k); });
+  }
+  return 1 + node.size();
+}
+
 }  // namespace homesh::gmsh_adapter

@@ -31,4 +31,8 @@ void add_elements(int type, const Eigen::MatrixXi& conn, const std::vector<int>&
     gmsh::model::mesh::addElementsByType(e, type, data.first, data.second);
 }
 
+/// Adds the point elements (Gmsh type 15) on nodes `node` of entities `entity`,
+/// tags 1 .. #points; returns the tag after them (the first line's).
+std::size_t add_point_elements(const std::vector<int>& node, const std::vector<int>& entity);
+
 }  // namespace homesh::gmsh_adapter

@@ -61,12 +61,7 @@ ModelTags write_model(const Mesh& m) {
   const auto after = [](std::size_t first) {
     return [first](int k) { return first + static_cast<std::size_t>(k); };
   };
-  if (!m.point_node.empty()) {
-    Eigen::MatrixXi conn(1, static_cast<Eigen::Index>(m.point_node.size()));
-    for (std::size_t k = 0; k < m.point_node.size(); ++k) conn(0, k) = m.point_node[k];
-    add_elements(15, conn, m.point_entity, after(1));
-  }
-  tags.first_line = 1 + m.point_node.size();
+  tags.first_line = add_point_elements(m.point_node, m.point_entity);
   tags.first_triangle = tags.first_line + static_cast<std::size_t>(m.num_lines());
   tags.triangles = m.num_triangles();
   // Mesh::triangle_tag numbers the 2D elements in file order only if they are
