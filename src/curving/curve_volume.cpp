@@ -19,7 +19,7 @@
 namespace homesh {
 namespace {
 
-double since(std::chrono::steady_clock::time_point t0) {
+double curve_seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -139,18 +139,18 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
   r.placed = placed.by_parameters + placed.by_projection;
   r.projected = placed.by_projection;
   r.largest_move = placed.largest_move;
-  r.seconds_place = since(t0);
+  r.seconds_place = curve_seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
   if (o.elastic && r.largest_move > 0) {
     const double extent = (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).maxCoeff();
     solve_elastic(m, d, solve_region(m, d, 1e-12 * extent, o.rings), o, r);
   }
-  r.seconds_solve = since(t0);
+  r.seconds_solve = curve_seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
   r.validity = volume_validity(m);
-  r.seconds_certify = since(t0);
+  r.seconds_certify = curve_seconds_since(t0);
   r.worst_before_optimiser = r.validity.worst;
 
   // The optimiser in two stages, below 0.3 then below the asked threshold: one
@@ -176,7 +176,7 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
     }
     if (bar >= o.optimise_threshold) break;
   }
-  r.seconds_optimise = since(t0);
+  r.seconds_optimise = curve_seconds_since(t0);
   return r;
 }
 

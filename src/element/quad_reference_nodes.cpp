@@ -10,7 +10,7 @@ namespace {
 
 // Fills columns [first, first + (p+1)^2) of `ij` with the integer node
 // coordinates of a quadrilateral of order p >= 0, shifted by (shift, shift).
-void fill_indices(int p, int shift, int first, Eigen::Matrix2Xi& ij) {
+void fill_quad_indices(int p, int shift, int first, Eigen::Matrix2Xi& ij) {
   int k = first;
   auto put = [&](int i, int j) { ij.col(k++) << i + shift, j + shift; };
   put(0, 0);
@@ -22,7 +22,7 @@ void fill_indices(int p, int shift, int first, Eigen::Matrix2Xi& ij) {
   for (int i = 1; i < p; ++i) put(p, i);      // edge 1-2
   for (int i = 1; i < p; ++i) put(p - i, p);  // edge 2-3
   for (int i = 1; i < p; ++i) put(0, p - i);  // edge 3-0
-  if (p >= 2) fill_indices(p - 2, shift + 1, k, ij);
+  if (p >= 2) fill_quad_indices(p - 2, shift + 1, k, ij);
 }
 
 }  // namespace
@@ -31,7 +31,7 @@ Eigen::Matrix2Xi quad_reference_node_indices(int p) {
   if (p < 1)
     throw Error("quad_reference_node_indices: order " + std::to_string(p) + " must be >= 1");
   Eigen::Matrix2Xi ij(2, quad_node_count(p));
-  fill_indices(p, 0, 0, ij);
+  fill_quad_indices(p, 0, 0, ij);
   return ij;
 }
 

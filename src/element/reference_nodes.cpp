@@ -14,7 +14,7 @@ void check_reference_order(int p, const char* what) {
 
 // Fills columns [first, first + (p+1)(p+2)/2) of `ij` with the integer node
 // coordinates of a triangle of order p >= 0, shifted by (shift, shift).
-void fill_indices(int p, int shift, int first, Eigen::Matrix2Xi& ij) {
+void fill_triangle_indices(int p, int shift, int first, Eigen::Matrix2Xi& ij) {
   int k = first;
   auto put = [&](int i, int j) { ij.col(k++) << i + shift, j + shift; };
   put(0, 0);
@@ -24,7 +24,7 @@ void fill_indices(int p, int shift, int first, Eigen::Matrix2Xi& ij) {
   for (int i = 1; i < p; ++i) put(i, 0);      // edge 0-1
   for (int i = 1; i < p; ++i) put(p - i, i);  // edge 1-2
   for (int i = 1; i < p; ++i) put(0, p - i);  // edge 2-0
-  if (p >= 3) fill_indices(p - 3, shift + 1, k, ij);
+  if (p >= 3) fill_triangle_indices(p - 3, shift + 1, k, ij);
 }
 
 }  // namespace
@@ -32,7 +32,7 @@ void fill_indices(int p, int shift, int first, Eigen::Matrix2Xi& ij) {
 Eigen::Matrix2Xi reference_node_indices(int p) {
   check_reference_order(p, "reference_node_indices");
   Eigen::Matrix2Xi ij(2, triangle_node_count(p));
-  fill_indices(p, 0, 0, ij);
+  fill_triangle_indices(p, 0, 0, ij);
   return ij;
 }
 

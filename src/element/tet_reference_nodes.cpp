@@ -16,7 +16,7 @@ constexpr int kFaces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {3, 1, 2}};
 
 // Columns from k on of `ijl`: the integer node coordinates of a tetrahedron of
 // order p >= 0, shifted by (shift, shift, shift).
-void fill_indices(int p, int shift, int& k, Eigen::Matrix3Xi& ijl) {
+void fill_tet_indices(int p, int shift, int& k, Eigen::Matrix3Xi& ijl) {
   const std::array<Eigen::Vector3i, 4> corner = {Eigen::Vector3i(0, 0, 0), Eigen::Vector3i(p, 0, 0),
                                                  Eigen::Vector3i(0, p, 0),
                                                  Eigen::Vector3i(0, 0, p)};
@@ -38,7 +38,7 @@ void fill_indices(int p, int shift, int& k, Eigen::Matrix3Xi& ijl) {
                           v = (corner[f[2]] - corner[f[0]]) / p;
     for (Eigen::Index n = 0; n < ab.cols(); ++n) put(corner[f[0]] + ab(0, n) * u + ab(1, n) * v);
   }
-  if (p >= 4) fill_indices(p - 4, shift + 1, k, ijl);
+  if (p >= 4) fill_tet_indices(p - 4, shift + 1, k, ijl);
 }
 
 void check_order(int p, const char* what) {
@@ -51,7 +51,7 @@ Eigen::Matrix3Xi tetrahedron_node_indices(int p) {
   check_order(p, "tetrahedron_node_indices");
   Eigen::Matrix3Xi ijl(3, tetrahedron_node_count(p));
   int k = 0;
-  fill_indices(p, 0, k, ijl);
+  fill_tet_indices(p, 0, k, ijl);
   return ijl;
 }
 

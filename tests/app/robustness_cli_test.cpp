@@ -34,7 +34,7 @@ void write(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-std::vector<std::string> files_in(const std::string& dir) {
+std::vector<std::string> robustness_files_in(const std::string& dir) {
   std::vector<std::string> out;
   for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename().string());
   std::sort(out.begin(), out.end());
@@ -252,7 +252,7 @@ TEST_CASE("A write past the file-size limit fails cleanly and the old output sta
   REQUIRE_THAT(r.output, Catch::Contains("cannot write '" + out + "'"));
   REQUIRE(read(out) == "the user's good file");
   REQUIRE(read(out + ".opt") == "its options");
-  REQUIRE(files_in(dir.path()) == std::vector<std::string>{"out.msh", "out.msh.opt"});
+  REQUIRE(robustness_files_in(dir.path()) == std::vector<std::string>{"out.msh", "out.msh.opt"});
 }
 
 TEST_CASE("A full disk fails the write cleanly and the old output stays", "[app][robustness]") {
@@ -267,7 +267,7 @@ TEST_CASE("A full disk fails the write cleanly and the old output stays", "[app]
   write(out, "the user's good file");
   const auto r = run_homesh(geo + "naca.geo -m mesh -m order:p=4 " + out);
   const std::string left = read(out);
-  const auto rest = files_in(mnt);
+  const auto rest = robustness_files_in(mnt);
   umount(mnt.c_str());
   INFO(r.output);
   REQUIRE(r.exit_code == 1);
@@ -283,7 +283,7 @@ TEST_CASE("kill -9 while writing keeps the old output and the next run removes t
   write(out, "the user's good file");
   auto temporaries = [&] {
     std::vector<std::string> t;
-    for (const auto& f : files_in(dir.path()))
+    for (const auto& f : robustness_files_in(dir.path()))
       if (f.rfind(".out.msh.tmp", 0) == 0) t.push_back(f);
     return t;
   };

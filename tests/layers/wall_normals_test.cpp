@@ -22,7 +22,7 @@ double signed_area(const Mesh& m, const WallLoop& loop) {
 }
 
 // A 4 x 4 grid of cells (side 2) with a 2 x 2 hole in the middle (side 1).
-Mesh box_with_hole() {
+Mesh normals_box_with_hole() {
   return test::grid_mesh(
       4, 4, 0.5, [](int i, int j) { return !(i >= 1 && i <= 2 && j >= 1 && j <= 2); },
       [](const Eigen::Vector2d& p) {
@@ -107,7 +107,7 @@ TEST_CASE("wall loops and normals of a circle: radial, the domain on the left", 
 }
 
 TEST_CASE("wall loops and normals of a square hole in a square box", "[layers]") {
-  const Mesh m = box_with_hole();
+  const Mesh m = normals_box_with_hole();
   const auto loops = wall_loops(m, wall_curves(m, {"1", "outer"}));
   REQUIRE(loops.size() == 2);
   int corners = 0;
@@ -138,7 +138,7 @@ TEST_CASE("wall loops and normals of a square hole in a square box", "[layers]")
 }
 
 TEST_CASE("wall loops refuse unknown names and interfaces, chain open walls", "[layers]") {
-  const Mesh m = box_with_hole();
+  const Mesh m = normals_box_with_hole();
   CHECK_THROWS_WITH(wall_curves(m, {"aerofoil"}),
                     Catch::Contains("no wall 'aerofoil'") && Catch::Contains("wall, outer"));
   CHECK_THROWS_WITH(wall_curves(m, {"7"}), Catch::Contains("no wall '7'"));
