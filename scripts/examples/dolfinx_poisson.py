@@ -106,6 +106,9 @@ def ball_mesh(order, size, curved):
     gmsh.model.setPhysicalName(2, 3, "ball")
     gmsh.option.setNumber("General.NumThreads", 1)
     gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+    # Options outlive gmsh.clear: the plate's studies set these.
+    gmsh.option.setNumber("Mesh.RecombineAll", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFactor", 1.0)
     gmsh.model.mesh.generate(3)
     if order > 1:
         (homesh.curve if curved else homesh.order)(p=order)
