@@ -6,14 +6,6 @@
 namespace homesh {
 namespace {
 
-template <int Rows>
-Eigen::Matrix<double, Rows, Eigen::Dynamic> gather(const Eigen::Matrix3Xd& x,
-                                                   const Eigen::MatrixXi& conn, int e) {
-  Eigen::Matrix<double, Rows, Eigen::Dynamic> X(3, conn.rows());
-  for (Eigen::Index i = 0; i < conn.rows(); ++i) X.col(i) = x.col(conn(i, e));
-  return X;
-}
-
 // Sorts the columns of conn and the entries of entity by entity tag, stably;
 // returns the permutation (empty if none was needed).
 std::vector<int> sort_by_entity(Eigen::MatrixXi& conn, std::vector<int>& entity) {
@@ -34,9 +26,11 @@ std::vector<int> sort_by_entity(Eigen::MatrixXi& conn, std::vector<int>& entity)
 
 }  // namespace
 
-Eigen::Matrix3Xd VolumeMesh::tetrahedron_nodes(int e) const { return gather<3>(x, tet, e); }
-
-Eigen::Matrix3Xd VolumeMesh::triangle_nodes(int e) const { return gather<3>(x, tri, e); }
+Eigen::Matrix3Xd VolumeMesh::tetrahedron_nodes(int e) const {
+  Eigen::Matrix3Xd X(3, tet.rows());
+  for (Eigen::Index i = 0; i < tet.rows(); ++i) X.col(i) = x.col(tet(i, e));
+  return X;
+}
 
 Eigen::Vector3d VolumeMesh::corner_centroid(int e) const {
   return (x.col(tet(0, e)) + x.col(tet(1, e)) + x.col(tet(2, e)) + x.col(tet(3, e))) / 4.0;

@@ -64,8 +64,6 @@ struct VolumeMesh {
 
   /// 3 by (p+1)(p+2)(p+3)/6 coordinates of the nodes of tetrahedron e, Gmsh order.
   Eigen::Matrix3Xd tetrahedron_nodes(int e) const;
-  /// 3 by (p+1)(p+2)/2 coordinates of the nodes of triangle e, Gmsh order.
-  Eigen::Matrix3Xd triangle_nodes(int e) const;
   /// Centroid of the corners of tetrahedron e (where reports place it).
   Eigen::Vector3d corner_centroid(int e) const;
   /// The Gmsh element tag of tetrahedron e once homesh writes the mesh

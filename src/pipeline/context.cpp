@@ -10,11 +10,6 @@ Mesh& Context::require_mesh(const std::string& stage) {
   return *mesh;
 }
 
-VolumeMesh& Context::require_volume(const std::string& stage) {
-  if (!volume) throw Error("stage '" + stage + "': " + input + " has no volume mesh");
-  return *volume;
-}
-
 void Context::require_cad(const std::string& stage) const {
   if (!has_cad)
     throw Error("stage '" + stage + "': " + input +

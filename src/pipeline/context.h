@@ -62,9 +62,6 @@ struct Context {
   /// The mesh, or homesh::Error telling `stage` needs one.
   Mesh& require_mesh(const std::string& stage);
 
-  /// The volume mesh, or homesh::Error telling `stage` needs one.
-  VolumeMesh& require_volume(const std::string& stage);
-
   /// homesh::Error telling `stage` needs CAD geometry to mesh, unless the input has it.
   void require_cad(const std::string& stage) const;
 };
