@@ -10,6 +10,7 @@
 #include "core/corner_tetrahedra.h"
 #include "core/error.h"
 #include "core/raise_volume_order.h"
+#include "core/split_tetrahedra.h"
 #include "curving/optimise_volume.h"
 #include "curving/place_on_volume_cad.h"
 #include "element/barycentric_indices.h"
@@ -163,18 +164,53 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
   // ring wider (a start that cannot mend an element leaves it as it was: only
   // certified gains are kept).
   t0 = std::chrono::steady_clock::now();
-  for (const double stage : {0.3, 1.0}) {
-    const double bar = std::min(stage, o.optimise_threshold);
-    for (int start = 0; start < 3 && bar > 0 && r.validity.worst < bar; ++start) {
-      VolumeOptimiseOptions opt;
-      opt.threshold = bar;
-      opt.rings = o.optimise_rings + (start == 2 ? 1 : 0);
-      opt.slide_vertices = start > 0;
-      const VolumeOptimiseResult res = optimise_volume(m, cad, r.validity, opt);
-      r.patches += res.patches;
-      r.optimised += res.accepted;
+  const auto optimise = [&](const std::vector<char>& only) {
+    for (const double stage : {0.3, 1.0}) {
+      const double bar = std::min(stage, o.optimise_threshold);
+      for (int start = 0; start < 3 && bar > 0 && r.validity.worst < bar; ++start) {
+        VolumeOptimiseOptions opt;
+        opt.only = only;
+        opt.threshold = bar;
+        opt.rings = o.optimise_rings + (start == 2 ? 1 : 0);
+        opt.slide_vertices = start > 0;
+        const VolumeOptimiseResult res = optimise_volume(m, cad, r.validity, opt);
+        r.patches += res.patches;
+        r.optimised += res.accepted;
+      }
+      if (bar >= o.optimise_threshold) break;
     }
-    if (bar >= o.optimise_threshold) break;
+  };
+  optimise({});
+  // Caps left invalid: split them and optimise round their children (the
+  // tetrahedra with a node the split made). Kept only if certified better:
+  // fewer invalid tetrahedra counting a cap's invalid children as one, or as
+  // many and a higher worst (a child's minJ/maxJ can be below its parent's).
+  if (o.split_wall_caps && o.optimise_threshold > 0 && r.validity.invalid > 0) {
+    std::vector<char> bad(static_cast<std::size_t>(m.num_tetrahedra()), 0);
+    for (int e = 0; e < m.num_tetrahedra(); ++e) bad[e] = r.validity.min_det(e) <= 0 ? 1 : 0;
+    const std::vector<int> caps = wall_capped(m, bad);
+    if (!caps.empty()) {
+      VolumeMesh unsplit = m;
+      const MeshValidity before = r.validity;
+      const int nodes = m.num_nodes();
+      const std::vector<int> from = split_at_centroid(m, caps);
+      r.validity = volume_validity(m);
+      std::vector<char> child(static_cast<std::size_t>(m.num_tetrahedra()), 0);
+      for (int e = 0; e < m.num_tetrahedra(); ++e)
+        for (Eigen::Index k = 0; k < m.tet.rows() && !child[e]; ++k)
+          child[e] = m.tet(k, e) >= nodes ? 1 : 0;
+      optimise(child);
+      std::vector<char> invalid(static_cast<std::size_t>(unsplit.num_tetrahedra()), 0);
+      for (int e = 0; e < m.num_tetrahedra(); ++e)
+        if (r.validity.min_det(e) <= 0) invalid[from[e]] = 1;
+      const int now = static_cast<int>(std::count(invalid.begin(), invalid.end(), 1));
+      if (now < before.invalid || (now == before.invalid && r.validity.worst > before.worst)) {
+        r.split = static_cast<int>(caps.size());
+      } else {
+        m = std::move(unsplit);
+        r.validity = before;
+      }
+    }
   }
   r.seconds_optimise = curve_seconds_since(t0);
   return r;

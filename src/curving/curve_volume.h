@@ -67,6 +67,14 @@ struct VolumeCurveOptions {
   /// p = 4 (9 -> 18 s) and triples the coarse ones' (which stay below it).
   double optimise_threshold = 0.5;
   int optimise_rings = 1;
+  /// If tetrahedra with all four corners on the wall are left invalid, split
+  /// each at its centroid (core/split_tetrahedra.h: conforming, the neighbours
+  /// untouched) and optimise again: the children have a node inside the volume.
+  /// Such caps are what the optimiser could not mend on the 3D corpus (the
+  /// wing's trailing edge, the gap between close spheres). false: the mesh's
+  /// tetrahedra stay the caller's, and the caps may stay invalid. Only with the
+  /// optimiser on (optimise_threshold > 0).
+  bool split_wall_caps = true;
 };
 
 struct VolumeCurveResult {
@@ -80,6 +88,8 @@ struct VolumeCurveResult {
   int unknowns = 0;
   /// The optimiser's patches and those it kept, and the worst minJ/maxJ before it.
   int patches = 0, optimised = 0;
+  /// Wall-capped tetrahedra split at their centroid (split_wall_caps).
+  int split = 0;
   double worst_before_optimiser = 1;
   /// Certified validity of the result (quality/volume_validity.h).
   MeshValidity validity;

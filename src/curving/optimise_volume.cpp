@@ -333,7 +333,8 @@ VolumeOptimiseResult optimise_volume(VolumeMesh& m, const VolumeCad& cad, MeshVa
   const int n = m.num_tetrahedra();
   std::vector<char> poor(static_cast<std::size_t>(n), 0);
   bool any = false;
-  for (int e = 0; e < n; ++e) any |= (poor[e] = validity.ratio(e) < o.threshold) != 0;
+  for (int e = 0; e < n; ++e)
+    any |= (poor[e] = validity.ratio(e) < o.threshold && (o.only.empty() || o.only[e])) != 0;
   if (!any) return r;
 
   // What may move: inside the volume (its vertices if o.move_vertices), and on

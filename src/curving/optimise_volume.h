@@ -5,6 +5,8 @@
 // a patch's result is kept only if certified no worse. The 3D counterpart of
 // curving/optimise_mesh.h, for the elements the elastic analogy cannot mend
 // (a tetrahedron with all four corners on a curved wall has no node inside).
+#include <vector>
+
 #include "core/volume_mesh.h"
 #include "curving/curve_volume.h"
 #include "quality/mesh_validity.h"
@@ -28,6 +30,10 @@ struct VolumeOptimiseOptions {
   /// Slide the linear mesh's vertices on CAD surfaces and curves too (else they
   /// stay where the mesher put them).
   bool slide_vertices = false;
+  /// If not empty (#tetrahedra flags): only the flagged elements below the
+  /// threshold seed patches (the children of a split, not the elements earlier
+  /// starts could not lift).
+  std::vector<char> only;
 };
 
 struct VolumeOptimiseResult {

@@ -63,8 +63,14 @@ void run_volume(Context& ctx, const CurveOptions& o) {
     ctx.log.info("  optimiser: {} of {} patches kept, worst minJ/maxJ {:.4f} -> {:.4f} ({:.3f} s)",
                  r.optimised, r.patches, r.worst_before_optimiser, r.validity.worst,
                  r.seconds_optimise);
+  if (r.split > 0)
+    ctx.log.info(
+        "  {} tetrahedra with four corners on the wall, left invalid, split at their centroid "
+        "(+{} tetrahedra)",
+        r.split, 3 * r.split);
   ctx.log.info("  {}", validity_line(m, r.validity));
   ctx.results = {{"patches", r.patches},
+                 {"split", r.split},
                  {"optimised", r.optimised},
                  {"seconds_optimise", r.seconds_optimise},
                  {"worst", r.validity.worst},
@@ -272,6 +278,11 @@ Stage curve_stage() {
       "tet_patch_rings", [](CurveOptions& o) -> int& { return o.volume.optimise_rings; },
       integer(0, 100),
       "tetrahedra: the optimiser's patches are its poor elements and this many layers");
+  t.add(
+      "tet_split_caps", [](CurveOptions& o) -> bool& { return o.volume.split_wall_caps; },
+      boolean(),
+      "tetrahedra: split at its centroid each one with four corners on the wall left invalid, "
+      "and optimise again (kept only if certified better; 0: the tetrahedra stay the input's)");
   t.add(
       "tet_solver", [](CurveOptions& o) -> std::string& { return o.volume.solver.method; },
       one_of(linear_solver_names()),
