@@ -11,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "fem/cholmod_memory.h"
+#include "fem/petsc_solver.h"
 #include "pipeline/output_format.h"
 #include "pipeline/run_pipeline.h"
 #include "pipeline/stage_registry.h"
@@ -39,7 +40,7 @@ std::string quoted_command_line(int argc, char** argv) {
   return line;
 }
 
-int run(int argc, char** argv) {
+int run(int argc, char** argv, const homesh::ParallelSession& parallel) {
   CLI::App app{"homesh: curved, valid high-order triangle meshes for Gmsh users", "homesh"};
   app.set_help_flag();
   std::string input, output;
@@ -134,7 +135,9 @@ int run(int argc, char** argv) {
   // never thrown from inside Gmsh's OpenMP regions, where they would abort.
   gmsh::option::setNumber("General.AbortOnError", 0);
   homesh::Context ctx;
-  ctx.log.quiet = quiet;
+  // Under mpirun every rank runs the pipeline on the whole mesh (only the
+  // petsc solve is shared: fem/petsc_solver.h); rank 0 alone reports and writes.
+  ctx.log.quiet = quiet || !parallel.root();
   ctx.keep_invalid = keep_invalid;
   ctx.trust_geo = trust_geo;
   if (output.empty())
@@ -142,7 +145,7 @@ int run(int argc, char** argv) {
                  homesh::output_formats_usage());
   homesh::load_input(input, ctx);
   homesh::run_stages(calls, ctx);
-  if (!output.empty())
+  if (!output.empty() && parallel.root())
     homesh::write_output(output, "homesh " HOMESH_VERSION "\n" + quoted_command_line(argc, argv),
                          ctx);
   gmsh::finalize();
@@ -152,15 +155,16 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  homesh::tune_allocator();        // core/allocator_tuning.h says why
-  homesh::route_cholmod_memory();  // fem/cholmod_memory.h says why
+  homesh::tune_allocator();                        // core/allocator_tuning.h says why
+  homesh::route_cholmod_memory();                  // fem/cholmod_memory.h says why
+  homesh::ParallelSession parallel(&argc, &argv);  // under mpirun: PETSc and MPI
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   // Past a file-size limit, writes fail with EFBIG and homesh says so, instead
   // of the process being killed with its output half-written.
   std::signal(SIGXFSZ, SIG_IGN);
   try {
-    return run(argc, argv);
+    return run(argc, argv, parallel);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return 0;
     std::fprintf(stderr, "homesh: error: %s (see homesh --help)\n", e.what());

@@ -9,6 +9,7 @@
 #include "fem/amd_ldlt.h"
 #include "fem/cholmod_solver.h"
 #include "fem/conjugate_gradient.h"
+#include "fem/petsc_solver.h"
 #include "fem/preconditioner.h"
 #include "fem/sparse_pattern.h"
 
@@ -77,6 +78,18 @@ struct Cg : Backend {
   }
 };
 
+// PETSc's KSP (fem/petsc_solver.h): the same system on every MPI process.
+struct Petsc : Backend {
+  LinearSolverOptions options;
+  Matrix lower;
+  explicit Petsc(LinearSolverOptions o) : options(std::move(o)) {}
+  void analyze(const Matrix&) override {}
+  void factorize(const Matrix& K) override { lower = K; }
+  LinearSolveResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) const override {
+    return petsc_solve(lower, b, guess, options);
+  }
+};
+
 using BackendFactory = std::unique_ptr<Backend> (*)(const LinearSolverOptions&);
 
 // The one list of solvers: name and factory.
@@ -90,8 +103,12 @@ const std::vector<std::pair<std::string, BackendFactory>>& backend_registry() {
        [](const LinearSolverOptions&) -> std::unique_ptr<Backend> {
          return std::make_unique<Ldlt>();
        }},
-      {"cg", [](const LinearSolverOptions& o) -> std::unique_ptr<Backend> {
+      {"cg",
+       [](const LinearSolverOptions& o) -> std::unique_ptr<Backend> {
          return std::make_unique<Cg>(o);
+       }},
+      {"petsc", [](const LinearSolverOptions& o) -> std::unique_ptr<Backend> {
+         return std::make_unique<Petsc>(o);
        }}};
   return entries;
 }

@@ -9,6 +9,7 @@
 #include "../support/gmsh_session.h"
 #include "../support/run_command.h"
 #include "../support/temp_dir.h"
+#include "fem/petsc_solver.h"
 #include "gmsh/read_volume_model.h"
 #include "quality/volume_validity.h"
 
@@ -81,4 +82,47 @@ TEST_CASE("tetrahedra to .vtu: Lagrange tetrahedra with the certified minJ/maxJ"
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK_THAT(text, Catch::Contains("Name=\"homesh: certified minJ/maxJ\""));
   CHECK_THAT(text, Catch::Contains("NumberOfPoints="));
+}
+
+TEST_CASE("tetrahedra: the petsc solve under mpirun -n 2 gives the mesh one process gives",
+          "[app][volume][petsc]") {
+  const TempDir dir;
+  const std::string args = geo + "ball_in_box.geo -m curve:p=2:tet_solver=";
+  const auto cg = run_homesh(args + "cg " + dir / "cg.msh");
+  REQUIRE(cg.exit_code == 0);
+  if (!homesh::petsc_available()) {
+    const auto r = run_homesh(args + "petsc " + dir / "one.msh");
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.output, Catch::Contains("without PETSc"));
+    return;
+  }
+  const auto one = run_homesh(args + "petsc " + dir / "one.msh");
+  INFO(one.output);
+  REQUIRE(one.exit_code == 0);
+  // Open MPI refuses root without these; CI runs as root.
+  const auto two = homesh::test::run_command(
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe -n 2 " +
+      homesh::test::homesh_binary + " " + args + "petsc " + dir / "two.msh");
+  INFO(two.output);
+  REQUIRE(two.exit_code == 0);
+  // Rank 0 alone reports (once) and writes.
+  std::size_t said = 0;
+  for (std::size_t at = 0;
+       (at = two.output.find("validity: 0 invalid of", at)) != std::string::npos; ++at)
+    ++said;
+  CHECK(said == 2);  // the curve stage's line and the summary's, as one process says them
+  homesh::test::GmshSession session;
+  const auto nodes = [](const std::string& file) {
+    gmsh::clear();
+    gmsh::open(file);
+    return homesh::gmsh_adapter::read_volume_model(file);
+  };
+  const homesh::VolumeMesh a = nodes(dir / "cg.msh"), b = nodes(dir / "one.msh"),
+                           c = nodes(dir / "two.msh");
+  REQUIRE(a.x.cols() == b.x.cols());
+  REQUIRE(b.x.cols() == c.x.cols());
+  CHECK(a.tet == c.tet);
+  // Jacobi CG's iterates do not depend on the rows' split: only rounding differs.
+  CHECK((b.x - c.x).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK((a.x - b.x).cwiseAbs().maxCoeff() < 1e-10);  // homesh's own Jacobi CG
 }

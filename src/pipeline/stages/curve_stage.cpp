@@ -287,7 +287,8 @@ Stage curve_stage() {
       "tet_solver", [](CurveOptions& o) -> std::string& { return o.volume.solver.method; },
       one_of(linear_solver_names()),
       "tetrahedra: the elastic solve's linear solver: " + names_text(linear_solver_names()) +
-          " (cg: Jacobi-preconditioned, to 1e-6)");
+          " (cg: Jacobi-preconditioned, to 1e-6; petsc: the same through PETSc, shared among "
+          "the processes of `mpirun -n N homesh ...`, PETSC_OPTIONS for others)");
   t.add(
       "tet_nu", [](CurveOptions& o) -> double& { return o.volume.nu; }, real(0, 0.5, "[)"),
       "tetrahedra: Poisson's ratio of the elastic analogy");

@@ -1,0 +1,185 @@
+#include "fem/petsc_solver.h"
+
+#include <cstdlib>
+#include <string>
+
+#include "core/error.h"
+
+#ifdef HOMESH_HAVE_PETSC
+#include <petscksp.h>
+#endif
+
+namespace homesh {
+
+bool mpi_launched() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+#ifdef HOMESH_HAVE_PETSC
+
+namespace {
+
+void check(PetscErrorCode code, const char* what) {
+  if (code != 0)
+    throw Error(std::string("solve_linear_system: petsc: ") + what + " failed (PETSc error " +
+                std::to_string(static_cast<int>(code)) + ")");
+}
+
+// PETSc's own handlers would replace homesh's (which remove a pending output
+// on SIGINT/SIGTERM) and trap signals homesh leaves alone.
+void quiet_signals() { PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr); }
+
+// PETSc started on first use when no ParallelSession did: one process,
+// finalised at exit.
+void ensure_petsc() {
+  PetscBool up = PETSC_FALSE;
+  check(PetscInitialized(&up), "PetscInitialized");
+  if (up) return;
+  quiet_signals();
+  check(PetscInitializeNoArguments(), "PetscInitialize");
+  std::atexit([] {
+    PetscBool finalised = PETSC_FALSE;
+    PetscFinalized(&finalised);
+    if (!finalised) PetscFinalize();
+  });
+}
+
+// RAII for PETSc objects.
+template <class T, PetscErrorCode (*Destroy)(T*)>
+struct Owned {
+  T p = nullptr;
+  ~Owned() {
+    if (p) Destroy(&p);
+  }
+};
+
+}  // namespace
+
+bool petsc_available() { return true; }
+
+ParallelSession::ParallelSession(int* argc, char*** argv) {
+  if (!mpi_launched()) return;
+  PetscBool up = PETSC_FALSE;
+  PetscInitialized(&up);
+  if (up) return;
+  // PETSc reads its options from PETSC_OPTIONS (the command line is homesh's).
+  int none = 1;
+  char** argv0 = *argv;
+  (void)argc;
+  quiet_signals();
+  if (PetscInitialize(&none, &argv0, nullptr, nullptr) != 0)
+    throw Error("PETSc/MPI failed to initialise under the MPI launcher");
+  initialised_ = true;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size_);
+}
+
+ParallelSession::~ParallelSession() {
+  if (initialised_) PetscFinalize();
+}
+
+LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b,
+                              const Eigen::VectorXd& guess, const LinearSolverOptions& o) {
+  ensure_petsc();
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const PetscInt n = static_cast<PetscInt>(K.rows());
+  // Rows split as PETSc's PETSC_DECIDE does: n / size each, the first n % size one more.
+  const PetscInt local = n / size + (rank < n % size ? 1 : 0);
+  const PetscInt first = rank * (n / size) + std::min<PetscInt>(rank, n % size);
+
+  // This process's rows of the full matrix, in CSR.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> full = K.selfadjointView<Eigen::Lower>();
+  std::vector<PetscInt> row(static_cast<std::size_t>(local) + 1), col;
+  std::vector<PetscScalar> value;
+  row[0] = 0;
+  for (PetscInt i = 0; i < local; ++i) {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(full, first + i); it;
+         ++it) {
+      col.push_back(static_cast<PetscInt>(it.col()));
+      value.push_back(it.value());
+    }
+    row[static_cast<std::size_t>(i) + 1] = static_cast<PetscInt>(col.size());
+  }
+  Owned<Mat, MatDestroy> A;
+  check(MatCreateMPIAIJWithArrays(comm, local, local, n, n, row.data(), col.data(), value.data(),
+                                  &A.p),
+        "MatCreateMPIAIJWithArrays");
+  Owned<Vec, VecDestroy> rhs, x;
+  check(MatCreateVecs(A.p, &x.p, &rhs.p), "MatCreateVecs");
+  {
+    PetscScalar* r = nullptr;
+    PetscScalar* s = nullptr;
+    check(VecGetArray(rhs.p, &r), "VecGetArray");
+    check(VecGetArray(x.p, &s), "VecGetArray");
+    for (PetscInt i = 0; i < local; ++i) {
+      r[i] = b(first + i);
+      s[i] = guess.size() ? guess(first + i) : 0.0;
+    }
+    VecRestoreArray(rhs.p, &r);
+    VecRestoreArray(x.p, &s);
+  }
+  Owned<KSP, KSPDestroy> ksp;
+  check(KSPCreate(comm, &ksp.p), "KSPCreate");
+  check(KSPSetOperators(ksp.p, A.p, A.p), "KSPSetOperators");
+  check(KSPSetType(ksp.p, KSPCG), "KSPSetType");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp.p, &pc), "KSPGetPC");
+  check(PCSetType(pc, o.preconditioner == "none" ? PCNONE : PCJACOBI), "PCSetType");
+  check(KSPSetNormType(ksp.p, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  const PetscInt limit = o.max_iterations > 0 ? o.max_iterations : std::max<PetscInt>(n, 1);
+  check(KSPSetTolerances(ksp.p, o.tolerance, 0.0, PETSC_DEFAULT, limit), "KSPSetTolerances");
+  check(KSPSetInitialGuessNonzero(ksp.p, guess.size() ? PETSC_TRUE : PETSC_FALSE),
+        "KSPSetInitialGuessNonzero");
+  check(KSPSetFromOptions(ksp.p), "KSPSetFromOptions");
+  check(KSPSolve(ksp.p, rhs.p, x.p), "KSPSolve");
+  KSPConvergedReason reason;
+  PetscInt iterations = 0;
+  PetscReal residual = 0;
+  check(KSPGetConvergedReason(ksp.p, &reason), "KSPGetConvergedReason");
+  check(KSPGetIterationNumber(ksp.p, &iterations), "KSPGetIterationNumber");
+  check(KSPGetResidualNorm(ksp.p, &residual), "KSPGetResidualNorm");
+  if (reason < 0)
+    throw Error("solve_linear_system: petsc cg did not converge in " +
+                std::to_string(static_cast<long>(iterations)) + " iterations (" +
+                KSPConvergedReasons[reason] + ")");
+
+  // The whole solution on every process.
+  Owned<VecScatter, VecScatterDestroy> scatter;
+  Owned<Vec, VecDestroy> all;
+  check(VecScatterCreateToAll(x.p, &scatter.p, &all.p), "VecScatterCreateToAll");
+  check(VecScatterBegin(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  check(VecScatterEnd(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  LinearSolveResult out;
+  out.x.resize(n);
+  const PetscScalar* a = nullptr;
+  check(VecGetArrayRead(all.p, &a), "VecGetArrayRead");
+  for (PetscInt i = 0; i < n; ++i) out.x(i) = a[i];
+  VecRestoreArrayRead(all.p, &a);
+  out.iterations = static_cast<int>(iterations);
+  const double bn = b.norm();
+  out.relative_residual = bn > 0 ? static_cast<double>(residual) / bn : 0.0;
+  return out;
+}
+
+#else
+
+bool petsc_available() { return false; }
+
+ParallelSession::ParallelSession(int*, char***) {}
+ParallelSession::~ParallelSession() = default;
+
+LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double>&, const Eigen::VectorXd&,
+                              const Eigen::VectorXd&, const LinearSolverOptions&) {
+  throw Error(
+      "solve_linear_system: this homesh was built without PETSc (install libpetsc-real-dev "
+      "and rebuild)");
+}
+
+#endif
+
+}  // namespace homesh
