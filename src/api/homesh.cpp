@@ -152,7 +152,7 @@ Result run(const std::string& name, const StageOptions& options) {
       r.nodes = m.num_nodes();
       r.triangles = m.num_triangles();
       r.tetrahedra = m.num_tetrahedra();
-      r.validity = summary(m, volume_validity(m));
+      r.validity = summary(m, ctx.volume_validity());
       return r;
     }
     if (!ctx.mesh) return r;

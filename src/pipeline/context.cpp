@@ -1,6 +1,7 @@
 #include "pipeline/context.h"
 
 #include "core/error.h"
+#include "quality/volume_validity.h"
 
 namespace homesh {
 
@@ -25,6 +26,22 @@ void Context::certify(MeshValidity v) {
   c.mesh.quad = m.quad;
   c.validity = std::move(v);
   certified = std::move(c);
+}
+
+void Context::certify_volume(MeshValidity v) {
+  if (!volume) throw Error("the certified validity of " + input + ": no tetrahedra");
+  VolumeCertified c;
+  c.mesh.order = volume->order;  // what volume_validity's reuse compares
+  c.mesh.x = volume->x;
+  c.mesh.tet = volume->tet;
+  c.validity = std::move(v);
+  volume_certified = std::move(c);
+}
+
+MeshValidity Context::volume_validity() const {
+  if (!volume) throw Error("the certified validity of " + input + ": no tetrahedra");
+  if (!volume_certified) return homesh::volume_validity(*volume);
+  return homesh::volume_validity(*volume, volume_certified->mesh, volume_certified->validity);
 }
 
 MeshValidity Context::mesh_validity() const {

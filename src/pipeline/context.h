@@ -50,8 +50,20 @@ struct Context {
   };
   std::optional<Certified> certified;
 
+  /// The same for `volume`: a state of its order, nodes and tetrahedra, and
+  /// their default-bounds validity, which volume_validity() reuses.
+  struct VolumeCertified {
+    VolumeMesh mesh;
+    MeshValidity validity;
+  };
+  std::optional<VolumeCertified> volume_certified;
+
   /// Records v as the certified validity of the mesh as it is now.
   void certify(MeshValidity v);
+  /// Records v (default bounds) as the certified validity of `volume` as it is now.
+  void certify_volume(MeshValidity v);
+  /// The certified validity of `volume` (default bounds), reusing `volume_certified`.
+  MeshValidity volume_validity() const;
 
   /// The certified validity of the mesh (default bounds), reusing `certified`.
   MeshValidity mesh_validity() const;

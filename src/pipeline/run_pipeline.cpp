@@ -168,7 +168,7 @@ void write_volume_output(const std::string& path, const std::string& provenance,
   const VolumeMesh& m = *ctx.volume;
   const OutputFormat format = check_output_path(path);
   // Every output carries its certified validity; an invalid mesh is never written silently.
-  const MeshValidity v = volume_validity(m);
+  const MeshValidity v = ctx.volume_validity();
   if (std::none_of(ctx.fields.begin(), ctx.fields.end(),
                    [](const Field& f) { return f.name == kValidityFieldName; })) {
     ctx.log.info("{}", validity_line(m, v));

@@ -34,4 +34,36 @@ MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt, int 
   return v;
 }
 
+MeshValidity volume_validity(const VolumeMesh& m, const VolumeMesh& previous,
+                             const MeshValidity& known) {
+  const int n = m.num_tetrahedra();
+  if (previous.order != m.order || previous.num_tetrahedra() != n ||
+      previous.tet.rows() != m.tet.rows() || known.ratio.size() != n ||
+      known.relative_tolerance != BoundsOptions{}.relative_tolerance ||
+      known.max_subdivisions != BoundsOptions{}.max_subdivisions)
+    return volume_validity(m);
+  MeshValidity v = known;
+  const BoundsOptions opt;
+#pragma omp parallel
+  {
+    Eigen::Matrix3Xd X(3, m.tet.rows());
+#pragma omp for schedule(dynamic, 256)
+    for (int e = 0; e < n; ++e) {
+      bool same = true;
+      for (Eigen::Index i = 0; i < m.tet.rows() && same; ++i) {
+        const int a = m.tet(i, e), b = previous.tet(i, e);
+        same = b < previous.num_nodes() && m.x.col(a) == previous.x.col(b);
+      }
+      if (same) continue;
+      for (Eigen::Index i = 0; i < X.cols(); ++i) X.col(i) = m.x.col(m.tet(i, e));
+      const JacobianBounds b = tetrahedron_jacobian_bounds(X, m.order, opt);
+      v.ratio(e) = scaled_jacobian_ratio(b);
+      v.min_det(e) = b.min_lower;
+      v.converged[e] = b.converged;
+    }
+  }
+  count_validity(v);
+  return v;
+}
+
 }  // namespace homesh

@@ -14,4 +14,11 @@ namespace homesh {
 /// homesh::Error if m's order exceeds kMaxTetrahedronOrder.
 MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt = {}, int threads = 0);
 
+/// volume_validity(m) with default bounds, reusing `known` (the default-bounds
+/// validity of `previous`) for each tetrahedron whose nodes are the same nodes
+/// at the same coordinates in both (bit for bit); the others are bounded anew.
+/// Everything is bounded anew if the order or the number of tetrahedra differ.
+MeshValidity volume_validity(const VolumeMesh& m, const VolumeMesh& previous,
+                             const MeshValidity& known);
+
 }  // namespace homesh

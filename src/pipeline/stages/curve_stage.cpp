@@ -52,6 +52,7 @@ void run_volume(Context& ctx, const CurveOptions& o) {
   const VolumeCad cad = gmsh_adapter::volume_cad();
   const VolumeCurveResult r = curve_volume(m, cad, v);
   ctx.fields.clear();
+  ctx.certify_volume(r.validity);  // the writers reuse it
   ctx.log.info(
       "curve: p = {}, {} tetrahedra: {} boundary nodes put on the CAD ({} by projection; "
       "largest move {:.3g}), "

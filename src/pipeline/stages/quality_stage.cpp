@@ -68,7 +68,13 @@ void run_volume(Context& ctx, const QualityOptions& o) {
   const VolumeMesh& m = *ctx.volume;
   const auto t0 = std::chrono::steady_clock::now();
   const int used = o.threads > 0 ? o.threads : omp_get_num_procs();
-  const MeshValidity v = volume_validity(m, o.bounds, used);
+  // With the default bounds the curve stage's certificate is reused where the
+  // tetrahedra are as it left them; the result is kept for the writers.
+  const bool default_bounds = o.bounds.relative_tolerance == BoundsOptions{}.relative_tolerance &&
+                              o.bounds.max_subdivisions == BoundsOptions{}.max_subdivisions;
+  const MeshValidity v =
+      default_bounds ? ctx.volume_validity() : volume_validity(m, o.bounds, used);
+  if (default_bounds) ctx.certify_volume(v);
   std::vector<const Measure*> chosen;
   for (const auto& name : o.measures) chosen.push_back(&measure(name));
   std::vector<MeshMeasure> measured = volume_quality(
