@@ -14,14 +14,24 @@ ConjugateGradientResult conjugate_gradient(const Eigen::SparseMatrix<double>& K,
     result.converged = true;
     return result;
   }
-  Eigen::VectorXd r = b - K * result.x;
+  // K is symmetric: its compressed column storage read as rows is K again, and
+  // Eigen shares a row-major sparse times dense product among its OpenMP
+  // threads (the column-major one runs on one).
+  const auto Kr = [&K] {
+    return Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+        K.rows(), K.cols(), K.nonZeros(), K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr());
+  };
+  if (!K.isCompressed())
+    return conjugate_gradient(Eigen::SparseMatrix<double>(K), b, x0, M, tolerance, max_iterations);
+  const auto R = Kr();
+  Eigen::VectorXd r = b - R * result.x;
   Eigen::VectorXd z, p, Kp(b.size());
   M(r, z);
   p = z;
   double rz = r.dot(z);
   double r_norm = r.norm();
   while (r_norm > tolerance * b_norm && result.iterations < max_iterations) {
-    Kp.noalias() = K * p;
+    Kp.noalias() = R * p;
     const double alpha = rz / p.dot(Kp);
     result.x += alpha * p;
     r -= alpha * Kp;
