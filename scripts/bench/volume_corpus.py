@@ -465,12 +465,13 @@ def append_row(csv_path, row):
 
 def run_case(c, orders, methods, args, csv_path, done):
     """Every (p, method) of case c not in `done`, a row each."""
-    timed_out = {m for (n, _, m), status in done.items() if n == c.name and status == "timeout"}
+    timed_out = {(m, q) for (n, q, m), status in done.items()
+                 if n == c.name and status == "timeout"}
     for p in orders:
         for m in methods:
             if (c.name, p, m) in done:
                 continue
-            if m in timed_out:
+            if any(q < p for (n, q) in timed_out if n == m):
                 rec, res = None, dict(status="timeout", error="not run: timed out at a lower p")
             else:
                 rec, res = run_one(c.name, p, m, args.timeout)
@@ -478,7 +479,7 @@ def run_case(c, orders, methods, args, csv_path, done):
                     res = corpus.least_time(lambda: run_one(c.name, p, m, args.timeout)[1],
                                             args.repeat, args.repeat_under, first=res)
             if res["status"] == "timeout":
-                timed_out.add(m)
+                timed_out.add((m, p))
             row = {k: "" for k in FIELDS}
             row.update(res)
             row.update(case=c.name, p=p, method=m,

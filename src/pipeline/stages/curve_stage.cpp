@@ -291,6 +291,10 @@ Stage curve_stage() {
           " (cg: Jacobi-preconditioned, to 1e-6; petsc: the same through PETSc, shared among "
           "the processes of `mpirun -n N homesh ...`, PETSC_OPTIONS for others)");
   t.add(
+      "tet_tolerance", [](CurveOptions& o) -> double& { return o.volume.solver.tolerance; },
+      real(0, 1, "()"),
+      "tetrahedra: the iterative solves (cg, petsc) stop at this relative residual");
+  t.add(
       "tet_nu", [](CurveOptions& o) -> double& { return o.volume.nu; }, real(0, 0.5, "[)"),
       "tetrahedra: Poisson's ratio of the elastic analogy");
   add_analogy_options(
