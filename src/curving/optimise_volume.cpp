@@ -8,7 +8,6 @@
 #include <map>
 
 #include "core/corner_tetrahedra.h"
-#include "curving/place_on_volume_cad.h"
 #include "element/tet_lagrange_basis.h"
 #include "element/tet_reference_nodes.h"
 #include "fem/tet_elasticity.h"
@@ -155,85 +154,40 @@ class Patch {
     for (std::size_t k = 0; k < nodes_.size(); ++k) m_.x.col(nodes_[k]) = z.segment<3>(3 * k);
   }
 
-  // The sliding nodes put back on their CAD, one batch per entity: Gauss-Newton
-  // on the parametrisation from the parameters they had when the patch began
-  // (place_on_volume_cad.h's newton_closest: evaluations only), OCC's
-  // projection where that does not converge. `params` gets the parameters
-  // found (NaN where projected). False, the mesh left as it was, if a point is
-  // not finite or lands beyond 1.5 radii (the node would have left its face).
+  // The sliding nodes projected onto their CAD (one call per entity). False,
+  // the mesh left as it was, if a projection is not finite or lands beyond
+  // 1.5 radii (the node would have left its face).
   bool snap() {
     Eigen::VectorXd z = positions();
-    std::map<std::pair<int, int>, Eigen::MatrixXd> found;
     for (const auto& [entity, ks] : sliding_) {
-      const auto n = static_cast<Eigen::Index>(ks.size());
-      Eigen::Matrix3Xd x(3, n);
-      Eigen::MatrixXd params(entity.first, n);
-      std::vector<double> reach(ks.size());
-      for (std::size_t j = 0; j < ks.size(); ++j) {
-        const auto c = static_cast<Eigen::Index>(j);
-        x.col(c) = z.segment<3>(3 * ks[j]);
-        const VolumeNodeClass& cls = m_.node_class[nodes_[ks[j]]];
-        params(0, c) = cls.u;
-        if (entity.first == 2) params(1, c) = cls.v;
-        reach[j] = radius_[ks[j]];
-      }
-      const std::vector<char> converged =
-          newton_closest(cad_, entity.first, entity.second, x, reach, params);
-      Eigen::Matrix3Xd y = cad_.value(entity.first, entity.second, params);
-      std::vector<Eigen::Index> rest;
-      for (Eigen::Index c = 0; c < n; ++c)
-        if (!converged[c] || y.cols() != n || !y.col(c).allFinite()) rest.push_back(c);
-      if (y.cols() != n) y.resize(3, n);
-      if (!rest.empty()) {
-        Eigen::Matrix3Xd xr(3, static_cast<Eigen::Index>(rest.size()));
-        for (std::size_t j = 0; j < rest.size(); ++j)
-          xr.col(static_cast<Eigen::Index>(j)) = x.col(rest[j]);
-        const Eigen::Matrix3Xd yr = cad_.closest(entity.first, entity.second, xr);
-        if (yr.cols() != xr.cols()) return false;
-        for (std::size_t j = 0; j < rest.size(); ++j) {
-          y.col(rest[j]) = yr.col(static_cast<Eigen::Index>(j));
-          params.col(rest[j]).setConstant(NAN);
-        }
-      }
-      if (!y.allFinite()) return false;
+      Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(ks.size()));
+      for (std::size_t j = 0; j < ks.size(); ++j)
+        x.col(static_cast<Eigen::Index>(j)) = z.segment<3>(3 * ks[j]);
+      const Eigen::Matrix3Xd y = cad_.closest(entity.first, entity.second, x);
+      if (y.cols() != x.cols() || !y.allFinite()) return false;
       for (std::size_t j = 0; j < ks.size(); ++j) {
         const Eigen::Vector3d yj = y.col(static_cast<Eigen::Index>(j));
         if ((yj - start_.segment<3>(3 * ks[j])).norm() > 1.5 * radius_[ks[j]]) return false;
         z.segment<3>(3 * ks[j]) = yj;
       }
-      found[entity] = std::move(params);
     }
     for (std::size_t k = 0; k < nodes_.size(); ++k) m_.x.col(nodes_[k]) = z.segment<3>(3 * k);
-    snapped_ = std::move(found);
     return true;
   }
 
-  // The CAD parameters of the sliding nodes where they are now: those the last
-  // snap found, else asked of the CAD (NaN if not found).
+  // The CAD parameters of the sliding nodes where they are now (NaN if not found).
   void update_parameters() {
     for (const auto& [entity, ks] : sliding_) {
-      const auto n = static_cast<Eigen::Index>(ks.size());
-      Eigen::MatrixXd params = Eigen::MatrixXd::Constant(entity.first, n, NAN);
-      const auto found = snapped_.find(entity);
-      if (found != snapped_.end() && found->second.cols() == n) params = found->second;
-      std::vector<Eigen::Index> ask;
-      for (Eigen::Index c = 0; c < n; ++c)
-        if (!params.col(c).allFinite()) ask.push_back(c);
-      if (!ask.empty()) {
-        Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(ask.size()));
-        for (std::size_t j = 0; j < ask.size(); ++j)
-          x.col(static_cast<Eigen::Index>(j)) = m_.x.col(nodes_[ks[ask[j]]]);
-        const Eigen::MatrixXd asked = cad_.parameters(entity.first, entity.second, x);
-        for (std::size_t j = 0; j < ask.size(); ++j)
-          params.col(ask[j]) =
-              asked.cols() == x.cols() && asked.rows() >= entity.first
-                  ? Eigen::VectorXd(asked.col(static_cast<Eigen::Index>(j)).head(entity.first))
-                  : Eigen::VectorXd::Constant(entity.first, NAN);
-      }
+      Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(ks.size()));
+      for (std::size_t j = 0; j < ks.size(); ++j)
+        x.col(static_cast<Eigen::Index>(j)) = m_.x.col(nodes_[ks[j]]);
+      const Eigen::MatrixXd params = cad_.parameters(entity.first, entity.second, x);
       for (std::size_t j = 0; j < ks.size(); ++j) {
         VolumeNodeClass& c = m_.node_class[nodes_[ks[j]]];
-        c.u = params(0, static_cast<Eigen::Index>(j));
-        if (entity.first == 2) c.v = params(1, static_cast<Eigen::Index>(j));
+        const bool ok = params.cols() == x.cols();
+        c.u = ok ? params(0, static_cast<Eigen::Index>(j)) : NAN;
+        if (entity.first == 2)
+          c.v = ok && params.rows() > 1 ? params(1, static_cast<Eigen::Index>(j)) : NAN;
       }
     }
   }
@@ -302,8 +256,6 @@ class Patch {
   std::vector<int> elements_;
   std::vector<int> nodes_;
   std::map<std::pair<int, int>, std::vector<int>> sliding_;
-  // The parameters of the sliding nodes at the last snap (NaN: projected).
-  std::map<std::pair<int, int>, Eigen::MatrixXd> snapped_;
   Eigen::MatrixXi local_;  // element node -> movable node index, or -1
   Eigen::VectorXd start_;  // the movable nodes where the patch started
   std::vector<double> radius_;

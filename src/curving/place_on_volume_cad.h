@@ -2,7 +2,6 @@
 // Putting the nodes a volume mesh's order raising added on its CAD curves and
 // surfaces (issue 24; the first step of curving/curve_volume.h).
 #include <Eigen/Core>
-#include <vector>
 
 #include "core/volume_mesh.h"
 #include "curving/curve_volume.h"
@@ -30,16 +29,5 @@ struct VolumePlacement {
 /// straight node (cad.closest) is taken instead. Sets the placed nodes'
 /// parameters. Throws homesh::Error if a closest point is not finite.
 VolumePlacement place_on_volume_cad(VolumeMesh& m, const VolumeCad& cad);
-
-/// Gauss-Newton steps (four) on entity (dim, tag)'s parametrisation from
-/// `params` (dim by n) towards those of the closest points to the columns of
-/// x: what projection gives, by evaluations only (OCC's projection on a
-/// B-spline surface costs 0.3 ms a point). Returns, per point, whether the
-/// steps converged (the last one shorter than 1e-4 of its reach: the point is
-/// on the CAD whatever the steps, only its place along it waits) to parameters
-/// within the entity's range; near a degenerate point (a sphere's pole), across
-/// a seam, or from parameters not finite they need not, and the caller projects.
-std::vector<char> newton_closest(const VolumeCad& cad, int dim, int tag, const Eigen::Matrix3Xd& x,
-                                 const std::vector<double>& reach, Eigen::MatrixXd& params);
 
 }  // namespace homesh
