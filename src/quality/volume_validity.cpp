@@ -5,6 +5,19 @@
 #include "core/error.h"
 
 namespace homesh {
+namespace {
+
+// Bounds tetrahedron e of m into v (X: scratch for its nodes).
+void bound_tetrahedron(const VolumeMesh& m, int e, const BoundsOptions& opt, Eigen::Matrix3Xd& X,
+                       MeshValidity& v) {
+  for (Eigen::Index i = 0; i < X.cols(); ++i) X.col(i) = m.x.col(m.tet(i, e));
+  const JacobianBounds b = tetrahedron_jacobian_bounds(X, m.order, opt);
+  v.ratio(e) = scaled_jacobian_ratio(b);
+  v.min_det(e) = b.min_lower;
+  v.converged[e] = b.converged;
+}
+
+}  // namespace
 
 MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt, int threads) {
   if (m.order > kMaxTetrahedronOrder)
@@ -22,13 +35,7 @@ MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt, int 
   {
     Eigen::Matrix3Xd X(3, m.tet.rows());
 #pragma omp for schedule(dynamic, 64)
-    for (int e = 0; e < n; ++e) {
-      for (Eigen::Index i = 0; i < X.cols(); ++i) X.col(i) = m.x.col(m.tet(i, e));
-      const JacobianBounds b = tetrahedron_jacobian_bounds(X, m.order, opt);
-      v.ratio(e) = scaled_jacobian_ratio(b);
-      v.min_det(e) = b.min_lower;
-      v.converged[e] = b.converged;
-    }
+    for (int e = 0; e < n; ++e) bound_tetrahedron(m, e, opt, X, v);
   }
   count_validity(v);
   return v;
@@ -54,12 +61,7 @@ MeshValidity volume_validity(const VolumeMesh& m, const VolumeMesh& previous,
         const int a = m.tet(i, e), b = previous.tet(i, e);
         same = b < previous.num_nodes() && m.x.col(a) == previous.x.col(b);
       }
-      if (same) continue;
-      for (Eigen::Index i = 0; i < X.cols(); ++i) X.col(i) = m.x.col(m.tet(i, e));
-      const JacobianBounds b = tetrahedron_jacobian_bounds(X, m.order, opt);
-      v.ratio(e) = scaled_jacobian_ratio(b);
-      v.min_det(e) = b.min_lower;
-      v.converged[e] = b.converged;
+      if (!same) bound_tetrahedron(m, e, opt, X, v);
     }
   }
   count_validity(v);

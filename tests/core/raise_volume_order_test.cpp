@@ -7,39 +7,11 @@
 #include "core/error.h"
 #include "element/tet_reference_nodes.h"
 #include "quality/volume_validity.h"
+#include "two_tetrahedra.h"
 
 using namespace homesh;
 
 namespace {
-
-// Two linear tetrahedra sharing the face 1-2-3, the second with its corners in
-// another rotation of that face, the face 0-1-2 of the first a surface triangle
-// (tag 5, corners with surface parameters u = x, v = y) with the line 0-1 on
-// curve 4 (corner 0 at u = 0, corner 1 at u = 2, both on that curve):
-// V = 5, E = 9, F = 7, T = 2.
-VolumeMesh pair() {
-  VolumeMesh m;
-  m.x.resize(3, 5);
-  m.x << 0.0, 2.0, 0.3, 0.2, 1.4,  //
-      0.0, 0.1, 1.7, 0.4, 1.2,     //
-      0.0, 0.0, 0.1, 1.6, 1.5;
-  m.node_class = {{1, 4, 0.0}, {1, 4, 2.0}, {2, 5, 0.3, 1.7}, {3, 1}, {3, 1}};
-  m.tet.resize(4, 2);
-  m.tet << 0, 2,  //
-      1, 3,       //
-      2, 1,       //
-      3, 4;
-  m.tet_entity = {1, 1};
-  m.tri.resize(3, 1);
-  m.tri << 0, 1, 2;
-  m.tri_entity = {5};
-  m.line.resize(2, 1);
-  m.line << 0, 1;
-  m.line_entity = {4};
-  m.entities = {{1, 4, {}}, {2, 5, {4}}, {3, 1, {5}}};
-  m.physicals = {{3, 9, "solid", {1}}};
-  return m;
-}
 
 // The affine map of tetrahedron e's corners at reference point (u, v, w).
 Eigen::Vector3d affine(const VolumeMesh& m, int e, const Eigen::Vector3d& r) {
@@ -52,7 +24,7 @@ Eigen::Vector3d affine(const VolumeMesh& m, int e, const Eigen::Vector3d& r) {
 
 TEST_CASE("raise_volume_order node count is V + (p-1) E + (p-1)(p-2)/2 F + (p-1)(p-2)(p-3)/6 T",
           "[core][raise_volume_order]") {
-  const VolumeMesh m = pair();
+  const VolumeMesh m = test::two_tetrahedra();
   for (int p = 1; p <= kMaxTetrahedronOrder; ++p) {
     INFO("p = " << p);
     const VolumeMesh r = raise_volume_order(m, p);
@@ -71,7 +43,7 @@ TEST_CASE("raise_volume_order node count is V + (p-1) E + (p-1)(p-2)/2 F + (p-1)
 
 TEST_CASE("raise_volume_order places every node at its element's affine map, shared ones once",
           "[core][raise_volume_order]") {
-  const VolumeMesh m = pair();
+  const VolumeMesh m = test::two_tetrahedra();
   for (int p = 2; p <= kMaxTetrahedronOrder; ++p) {
     INFO("p = " << p);
     const VolumeMesh r = raise_volume_order(m, p);
@@ -97,7 +69,7 @@ TEST_CASE("raise_volume_order places every node at its element's affine map, sha
 
 TEST_CASE("raise_volume_order classifies new nodes on the line, the triangle, else the volume",
           "[core][raise_volume_order]") {
-  const VolumeMesh m = pair();
+  const VolumeMesh m = test::two_tetrahedra();
   const int p = 4;
   const VolumeMesh r = raise_volume_order(m, p);
   for (Eigen::Index k = 2; k < r.line.rows(); ++k) {
@@ -129,7 +101,7 @@ TEST_CASE("raise_volume_order classifies new nodes on the line, the triangle, el
 
 TEST_CASE("raise_volume_order lowers back to the corners and refuses orders out of range",
           "[core][raise_volume_order]") {
-  const VolumeMesh m = pair();
+  const VolumeMesh m = test::two_tetrahedra();
   const VolumeMesh back = raise_volume_order(raise_volume_order(m, 3), 1);
   CHECK(back.x == m.x);
   CHECK(back.tet == m.tet);

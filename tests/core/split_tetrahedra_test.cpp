@@ -8,28 +8,11 @@
 #include "core/raise_volume_order.h"
 #include "element/barycentric_indices.h"
 #include "element/tet_lagrange_basis.h"
+#include "two_tetrahedra.h"
 
 using namespace homesh;
 
 namespace {
-
-// Two linear tetrahedra sharing the face 1-2-3; corners 0-2 on the wall.
-VolumeMesh split_pair() {
-  VolumeMesh m;
-  m.x.resize(3, 5);
-  m.x << 0.0, 2.0, 0.3, 0.2, 1.4,  //
-      0.0, 0.1, 1.7, 0.4, 1.2,     //
-      0.0, 0.0, 0.1, 1.6, 1.5;
-  m.node_class = {{1, 4, 0.0}, {1, 4, 2.0}, {2, 5, 0.3, 1.7}, {3, 1}, {3, 1}};
-  m.tet.resize(4, 2);
-  m.tet << 0, 2,  //
-      1, 3,       //
-      2, 1,       //
-      3, 4;
-  m.tet_entity = {1, 1};
-  m.entities = {{1, 4, {}}, {2, 5, {4}}, {3, 1, {5}}};
-  return m;
-}
 
 // m's tetrahedron e mapped at reference point r.
 Eigen::Vector3d map_at(const VolumeMesh& m, const TetLagrangeBasis& basis, int e,
@@ -43,7 +26,7 @@ TEST_CASE("split_at_centroid children reproduce the curved parent exactly and sh
           "[core][split_tetrahedra]") {
   for (int p = 1; p <= kMaxTetrahedronOrder; ++p) {
     INFO("p = " << p);
-    VolumeMesh m = raise_volume_order(split_pair(), p);
+    VolumeMesh m = raise_volume_order(homesh::test::two_tetrahedra(), p);
     std::mt19937 rng(7 + p);
     std::uniform_real_distribution<double> jitter(-0.05, 0.05);
     for (int i = 5; i < m.num_nodes(); ++i)
@@ -111,7 +94,7 @@ TEST_CASE("split_at_centroid children reproduce the curved parent exactly and sh
 
 TEST_CASE("wall_capped picks the flagged tetrahedra with four corners on the wall",
           "[core][split_tetrahedra]") {
-  VolumeMesh m = split_pair();
+  VolumeMesh m = homesh::test::two_tetrahedra();
   CHECK(wall_capped(m, {1, 1}).empty());
   m.node_class[3] = {2, 5};
   CHECK(wall_capped(m, {1, 1}) == std::vector<int>{0});

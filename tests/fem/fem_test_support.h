@@ -13,6 +13,8 @@
 #include "core/raise_order.h"
 #include "element/quad_reference_nodes.h"
 #include "element/reference_nodes.h"
+#include "fem/assemble_elasticity.h"
+#include "fem/dirichlet.h"
 #include "fem/elasticity_coefficients.h"
 #include "fem/element_geometry.h"
 #include "fem/element_tabulation.h"
@@ -246,6 +248,26 @@ inline Eigen::Vector2d manufactured_body_force(const Lame& l, const Eigen::Vecto
       -pi2 * ss - std::exp(x) * std::sin(y),
       pi2 * std::cos(M_PI * x) * std::cos(M_PI * y) - std::exp(x) * std::cos(y));
   return -(l.mu * laplacian + (l.lambda + l.mu) * grad_div);
+}
+
+/// The system the solver tests share: unit_square(n, p) warped by 0.04, E =
+/// young (1 + 4 x y) (a factor 5 across), nu = 0.45, body force (0.3, -1), the
+/// boundary sheared by u = (0.1 y, 0) and eliminated (bc_out: those conditions).
+inline LinearSystem sheared_square_system(int n, int p, double young = 1.0,
+                                          DirichletBC* bc_out = nullptr) {
+  Mesh m = unit_square(n, p);
+  const std::vector<int> boundary = square_boundary(m);
+  warp(m, 0.04);
+  ElasticityCoefficients c;
+  c.young = [young](const QuadraturePoint& q) { return young * (1.0 + 4.0 * q.x(0) * q.x(1)); };
+  c.poisson = 0.45;
+  c.body_force = Eigen::Vector2d(0.3, -1.0);
+  LinearSystem sys = assemble_elasticity(m, c);
+  DirichletBC bc;
+  for (int i : boundary) bc.fix(i, Eigen::Vector2d(0.1 * m.x(1, i), 0.0));
+  if (bc_out) *bc_out = bc;
+  apply_dirichlet(bc, sys);
+  return sys;
 }
 
 }  // namespace homesh::fem_test

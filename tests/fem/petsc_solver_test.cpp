@@ -4,35 +4,14 @@
 #include <catch2/catch.hpp>
 
 #include "core/error.h"
-#include "fem/dirichlet.h"
 #include "fem/linear_solver.h"
 #include "fem_test_support.h"
 
 using namespace homesh;
 using namespace homesh::fem_test;
 
-namespace {
-
-// A curved order-3 mesh of the warped unit square, clamped below, pushed by a body force.
-LinearSystem petsc_test_system() {
-  Mesh m = unit_square(4, 3);
-  const std::vector<int> boundary = square_boundary(m);
-  warp(m, 0.04);
-  ElasticityCoefficients c;
-  c.young = [](const QuadraturePoint& q) { return 1.0 + 4.0 * q.x(0) * q.x(1); };
-  c.poisson = 0.45;
-  c.body_force = Eigen::Vector2d(0.3, -1.0);
-  LinearSystem sys = assemble_elasticity(m, c);
-  DirichletBC bc;
-  for (int i : boundary) bc.fix(i, Eigen::Vector2d(0.1 * m.x(1, i), 0.0));
-  apply_dirichlet(bc, sys);
-  return sys;
-}
-
-}  // namespace
-
 TEST_CASE("petsc: CG with Jacobi agrees with CHOLMOD, or says it was not built", "[fem][petsc]") {
-  const LinearSystem sys = petsc_test_system();
+  const LinearSystem sys = sheared_square_system(4, 3);
   LinearSolverOptions o;
   o.method = "petsc";
   o.preconditioner = "jacobi";
