@@ -181,10 +181,10 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
     }
   };
   optimise({});
-  // Caps left invalid: split them and optimise round their children (the
-  // tetrahedra with a node the split made). Kept only if certified better:
-  // fewer invalid tetrahedra counting a cap's invalid children as one, or as
-  // many and a higher worst (a child's minJ/maxJ can be below its parent's).
+  // Caps left invalid: split them and optimise round their children. Kept only
+  // if certified better: fewer invalid tetrahedra counting a cap's invalid
+  // children as one, or as many and a higher worst (a child's minJ/maxJ can be
+  // below its parent's).
   if (o.split_wall_caps && o.optimise_threshold > 0 && r.validity.invalid > 0) {
     std::vector<char> bad(static_cast<std::size_t>(m.num_tetrahedra()), 0);
     for (int e = 0; e < m.num_tetrahedra(); ++e) bad[e] = r.validity.min_det(e) <= 0 ? 1 : 0;
@@ -192,13 +192,16 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
     if (!caps.empty()) {
       VolumeMesh unsplit = m;
       const MeshValidity before = r.validity;
-      const int nodes = m.num_nodes();
       const std::vector<int> from = split_at_centroid(m, caps);
-      r.validity = volume_validity(m);
-      std::vector<char> child(static_cast<std::size_t>(m.num_tetrahedra()), 0);
-      for (int e = 0; e < m.num_tetrahedra(); ++e)
-        for (Eigen::Index k = 0; k < m.tet.rows() && !child[e]; ++k)
-          child[e] = m.tet(k, e) >= nodes ? 1 : 0;
+      // The children are bounded, the other tetrahedra keep their bounds.
+      std::vector<char> cap(static_cast<std::size_t>(unsplit.num_tetrahedra()), 0), child;
+      for (const int e : caps) cap[e] = 1;
+      std::vector<int> known(from.size());
+      for (std::size_t e = 0; e < from.size(); ++e) {
+        child.push_back(cap[from[e]]);
+        known[e] = child.back() ? -1 : from[e];
+      }
+      r.validity = volume_validity(m, before, known);
       optimise(child);
       std::vector<char> invalid(static_cast<std::size_t>(unsplit.num_tetrahedra()), 0);
       for (int e = 0; e < m.num_tetrahedra(); ++e)

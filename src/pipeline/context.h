@@ -51,7 +51,7 @@ struct Context {
   std::optional<Certified> certified;
 
   /// The same for `volume`: a state of its order, nodes and tetrahedra, and
-  /// their default-bounds validity, which volume_validity() reuses.
+  /// their validity, which volume_validity() reuses where refined by its options.
   struct VolumeCertified {
     VolumeMesh mesh;
     MeshValidity validity;
@@ -60,7 +60,7 @@ struct Context {
 
   /// Records v as the certified validity of the mesh as it is now.
   void certify(MeshValidity v);
-  /// Records v (default bounds) as the certified validity of `volume` as it is now.
+  /// Records v as the certified validity of `volume` as it is now.
   void certify_volume(MeshValidity v);
   /// The certified validity of `volume` (default bounds), reusing `volume_certified`.
   MeshValidity volume_validity() const;

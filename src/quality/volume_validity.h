@@ -3,6 +3,8 @@
 // quality/mesh_validity.h for planar meshes, an element counts as valid only
 // if the Bezier bounds of its det J (quality/tet_bezier_jacobian.h) prove
 // det J > 0 on the whole element; undecided elements count as invalid.
+#include <vector>
+
 #include "core/volume_mesh.h"
 #include "quality/jacobian_bounds.h"
 #include "quality/mesh_validity.h"
@@ -14,11 +16,21 @@ namespace homesh {
 /// homesh::Error if m's order exceeds kMaxTetrahedronOrder.
 MeshValidity volume_validity(const VolumeMesh& m, const BoundsOptions& opt = {}, int threads = 0);
 
-/// volume_validity(m) with default bounds, reusing `known` (the default-bounds
-/// validity of `previous`) for each tetrahedron whose nodes are the same nodes
-/// at the same coordinates in both (bit for bit); the others are bounded anew.
-/// Everything is bounded anew if the order or the number of tetrahedra differ.
+/// volume_validity(m, opt, threads), taking tetrahedron e's bounds from entry
+/// known_index[e] of `known` where that is >= 0 (and known was refined by the
+/// same options: else every tetrahedron is bounded). For the elements a change
+/// left as they were (a split's untouched tetrahedra, renumbered).
+MeshValidity volume_validity(const VolumeMesh& m, const MeshValidity& known,
+                             const std::vector<int>& known_index, const BoundsOptions& opt = {},
+                             int threads = 0);
+
+/// volume_validity(m, opt, threads) given `known`, the validity of `previous`:
+/// each tetrahedron whose nodes are at the same coordinates in both (bit for
+/// bit: the bounds are a function of them) keeps known's bounds; the others are
+/// bounded anew. Every one is if the order or the number of tetrahedra differ,
+/// or known was refined by other options. The 3D twin of mesh_validity's.
 MeshValidity volume_validity(const VolumeMesh& m, const VolumeMesh& previous,
-                             const MeshValidity& known);
+                             const MeshValidity& known, const BoundsOptions& opt = {},
+                             int threads = 0);
 
 }  // namespace homesh

@@ -68,13 +68,13 @@ void run_volume(Context& ctx, const QualityOptions& o) {
   const VolumeMesh& m = *ctx.volume;
   const auto t0 = std::chrono::steady_clock::now();
   const int used = o.threads > 0 ? o.threads : omp_get_num_procs();
-  // With the default bounds the curve stage's certificate is reused where the
-  // tetrahedra are as it left them; the result is kept for the writers.
-  const bool default_bounds = o.bounds.relative_tolerance == BoundsOptions{}.relative_tolerance &&
-                              o.bounds.max_subdivisions == BoundsOptions{}.max_subdivisions;
-  const MeshValidity v =
-      default_bounds ? ctx.volume_validity() : volume_validity(m, o.bounds, used);
-  if (default_bounds) ctx.certify_volume(v);
+  // The curve stage's certificate is reused for the tetrahedra as it left them
+  // (if refined by the same options); the result is kept for the writers.
+  const MeshValidity v = ctx.volume_certified
+                             ? volume_validity(m, ctx.volume_certified->mesh,
+                                               ctx.volume_certified->validity, o.bounds, used)
+                             : volume_validity(m, o.bounds, used);
+  ctx.certify_volume(v);
   std::vector<const Measure*> chosen;
   for (const auto& name : o.measures) chosen.push_back(&measure(name));
   std::vector<MeshMeasure> measured = volume_quality(
