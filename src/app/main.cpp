@@ -155,9 +155,9 @@ int run(int argc, char** argv, const homesh::ParallelSession& parallel) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  homesh::tune_allocator();                        // core/allocator_tuning.h says why
-  homesh::route_cholmod_memory();                  // fem/cholmod_memory.h says why
-  homesh::ParallelSession parallel(&argc, &argv);  // under mpirun: PETSc and MPI
+  homesh::tune_allocator();          // core/allocator_tuning.h says why
+  homesh::route_cholmod_memory();    // fem/cholmod_memory.h says why
+  homesh::ParallelSession parallel;  // under mpirun: PETSc and MPI
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   // Past a file-size limit, writes fail with EFBIG and homesh says so, instead

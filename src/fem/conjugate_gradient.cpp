@@ -14,16 +14,13 @@ ConjugateGradientResult conjugate_gradient(const Eigen::SparseMatrix<double>& K,
     result.converged = true;
     return result;
   }
+  if (!K.isCompressed())
+    return conjugate_gradient(Eigen::SparseMatrix<double>(K), b, x0, M, tolerance, max_iterations);
   // K is symmetric: its compressed column storage read as rows is K again, and
   // Eigen shares a row-major sparse times dense product among its OpenMP
   // threads (the column-major one runs on one).
-  const auto Kr = [&K] {
-    return Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
-        K.rows(), K.cols(), K.nonZeros(), K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr());
-  };
-  if (!K.isCompressed())
-    return conjugate_gradient(Eigen::SparseMatrix<double>(K), b, x0, M, tolerance, max_iterations);
-  const auto R = Kr();
+  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> R(
+      K.rows(), K.cols(), K.nonZeros(), K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr());
   Eigen::VectorXd r = b - R * result.x;
   Eigen::VectorXd z, p, Kp(b.size());
   M(r, z);

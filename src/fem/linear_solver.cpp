@@ -79,14 +79,15 @@ struct Cg : Backend {
 };
 
 // PETSc's KSP (fem/petsc_solver.h): the same system on every MPI process.
+// Both triangles as rows, once per matrix, from which each process takes its rows.
 struct Petsc : Backend {
   LinearSolverOptions options;
-  Matrix lower;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> full;
   explicit Petsc(LinearSolverOptions o) : options(std::move(o)) {}
   void analyze(const Matrix&) override {}
-  void factorize(const Matrix& K) override { lower = K; }
+  void factorize(const Matrix& K) override { full = K.selfadjointView<Eigen::Lower>(); }
   LinearSolveResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) const override {
-    return petsc_solve(lower, b, guess, options);
+    return petsc_solve(full, b, guess, options);
   }
 };
 

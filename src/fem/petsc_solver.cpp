@@ -31,19 +31,27 @@ void check(PetscErrorCode code, const char* what) {
 // on SIGINT/SIGTERM) and trap signals homesh leaves alone.
 void quiet_signals() { PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr); }
 
+// Initialises PETSc (and MPI) unless something did already (a ParallelSession,
+// petsc4py in the same Python process); true if this call did.
+bool start_petsc() {
+  PetscBool up = PETSC_FALSE;
+  check(PetscInitialized(&up), "PetscInitialized");
+  if (up) return false;
+  quiet_signals();
+  // PETSc reads its options from PETSC_OPTIONS (the command line is homesh's).
+  check(PetscInitializeNoArguments(), "PetscInitialize");
+  return true;
+}
+
 // PETSc started on first use when no ParallelSession did: one process,
 // finalised at exit.
 void ensure_petsc() {
-  PetscBool up = PETSC_FALSE;
-  check(PetscInitialized(&up), "PetscInitialized");
-  if (up) return;
-  quiet_signals();
-  check(PetscInitializeNoArguments(), "PetscInitialize");
-  std::atexit([] {
-    PetscBool finalised = PETSC_FALSE;
-    PetscFinalized(&finalised);
-    if (!finalised) PetscFinalize();
-  });
+  if (start_petsc())
+    std::atexit([] {
+      PetscBool finalised = PETSC_FALSE;
+      PetscFinalized(&finalised);
+      if (!finalised) PetscFinalize();
+    });
 }
 
 // RAII for PETSc objects.
@@ -59,41 +67,30 @@ struct Owned {
 
 bool petsc_available() { return true; }
 
-ParallelSession::ParallelSession(int* argc, char*** argv) {
+ParallelSession::ParallelSession() {
   if (!mpi_launched()) return;
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (up) return;
-  // PETSc reads its options from PETSC_OPTIONS (the command line is homesh's).
-  int none = 1;
-  char** argv0 = *argv;
-  (void)argc;
-  quiet_signals();
-  if (PetscInitialize(&none, &argv0, nullptr, nullptr) != 0)
-    throw Error("PETSc/MPI failed to initialise under the MPI launcher");
-  initialised_ = true;
+  initialised_ = start_petsc();
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
-  MPI_Comm_size(PETSC_COMM_WORLD, &size_);
 }
 
 ParallelSession::~ParallelSession() {
   if (initialised_) PetscFinalize();
 }
 
-LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b,
-                              const Eigen::VectorXd& guess, const LinearSolverOptions& o) {
+LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& full,
+                              const Eigen::VectorXd& b, const Eigen::VectorXd& guess,
+                              const LinearSolverOptions& o) {
   ensure_petsc();
   const MPI_Comm comm = PETSC_COMM_WORLD;
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  const PetscInt n = static_cast<PetscInt>(K.rows());
+  const PetscInt n = static_cast<PetscInt>(full.rows());
   // Rows split as PETSc's PETSC_DECIDE does: n / size each, the first n % size one more.
   const PetscInt local = n / size + (rank < n % size ? 1 : 0);
   const PetscInt first = rank * (n / size) + std::min<PetscInt>(rank, n % size);
 
-  // This process's rows of the full matrix, in CSR.
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> full = K.selfadjointView<Eigen::Lower>();
+  // This process's rows of the matrix, in CSR.
   std::vector<PetscInt> row(static_cast<std::size_t>(local) + 1), col;
   std::vector<PetscScalar> value;
   row[0] = 0;
@@ -170,11 +167,12 @@ LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double>& K, const Eigen:
 
 bool petsc_available() { return false; }
 
-ParallelSession::ParallelSession(int*, char***) {}
+ParallelSession::ParallelSession() {}
 ParallelSession::~ParallelSession() = default;
 
-LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double>&, const Eigen::VectorXd&,
-                              const Eigen::VectorXd&, const LinearSolverOptions&) {
+LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>&,
+                              const Eigen::VectorXd&, const Eigen::VectorXd&,
+                              const LinearSolverOptions&) {
   throw Error(
       "solve_linear_system: this homesh was built without PETSc (install libpetsc-real-dev "
       "and rebuild)");

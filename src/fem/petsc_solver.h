@@ -29,26 +29,25 @@ bool mpi_launched();
 /// root(): whether this process writes (rank 0, or not launched by MPI).
 class ParallelSession {
  public:
-  ParallelSession(int* argc, char*** argv);
+  ParallelSession();
   ~ParallelSession();
   ParallelSession(const ParallelSession&) = delete;
   ParallelSession& operator=(const ParallelSession&) = delete;
   bool root() const { return rank_ == 0; }
-  int rank() const { return rank_; }
-  int size() const { return size_; }
 
  private:
   bool initialised_ = false;
-  int rank_ = 0, size_ = 1;
+  int rank_ = 0;
 };
 
-/// Solves K x = b, K symmetric positive definite read through its lower
-/// triangle, with PETSc's KSP (CG with PCJACOBI; PCNONE if o.preconditioner is
+/// Solves K x = b, K symmetric positive definite (`full`: both triangles, as
+/// rows), with PETSc's KSP (CG with PCJACOBI; PCNONE if o.preconditioner is
 /// "none"; PETSC_OPTIONS overrides both) to ||b - K x|| <= o.tolerance ||b||,
 /// from `guess` if not empty. Every process passes the same K and b and gets
 /// the whole x. Throws homesh::Error if the solve does not converge or homesh
 /// was built without PETSc.
-LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b,
-                              const Eigen::VectorXd& guess, const LinearSolverOptions& o);
+LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& full,
+                              const Eigen::VectorXd& b, const Eigen::VectorXd& guess,
+                              const LinearSolverOptions& o);
 
 }  // namespace homesh
