@@ -1,9 +1,10 @@
 #pragma once
-// Splitting tetrahedra at the centroid of their corners (issue 24): the local
-// topological repair for a tetrahedron whose four corners all lie on the wall.
-// Its only free high-order nodes are those of its interior edges, so when its
-// curved faces crowd it no interior node can mend it; split into four, each
-// child has a corner inside the volume and the optimiser a node to move.
+// Splitting tetrahedra at the centroid of their corners or at the midpoint of
+// an edge (issue 24): the local topological repairs for a tetrahedron whose
+// four corners all lie on the wall. Its only free high-order nodes are those of
+// its interior edges, so when its curved faces crowd it no interior node can
+// mend it; split, each child has a corner inside the volume and the optimiser
+// a node to move.
 #include <vector>
 
 #include "core/volume_mesh.h"
@@ -28,6 +29,19 @@ namespace homesh {
 /// Returns, for each tetrahedron after the split, the index before the split
 /// of the one it is or came from.
 std::vector<int> split_at_centroid(VolumeMesh& m, const std::vector<int>& which);
+
+/// Splits the edge between corner nodes a and b at its midpoint M (the edge's
+/// curved midpoint): every tetrahedron with that edge becomes the two with M in
+/// place of b and of a, so each keeps its orientation. Nodes as in
+/// split_at_centroid: the children reproduce their parents exactly; a new node
+/// on a face the parents share is made once, so the split is conforming. M and
+/// the other new nodes are inside the volume (dim 3): the edge must not lie on
+/// the mesh's boundary. The way to give a tetrahedron squeezed between two
+/// curved wall faces and an interior edge lying on the wall a vertex the
+/// optimiser can lift into the volume, together with the tetrahedra round the
+/// edge. Returns, for each tetrahedron after the split, the index before the
+/// split of the one it is or came from.
+std::vector<int> split_edge(VolumeMesh& m, int a, int b);
 
 /// The tetrahedra of m whose four corners are all on the boundary (classified on
 /// a model point, curve or surface) and whose flag in `bad` is set.
