@@ -282,8 +282,9 @@ Stage curve_stage() {
   t.add(
       "tet_split_caps", [](CurveOptions& o) -> bool& { return o.volume.split_wall_caps; },
       boolean(),
-      "tetrahedra: split at its centroid each one with four corners on the wall left invalid, "
-      "and optimise again (kept only if certified better; 0: the tetrahedra stay the input's)");
+      "tetrahedra: split those with four corners on the wall that stay poor: at their edge "
+      "lying on the wall before the optimiser, at that edge or their centroid if left invalid "
+      "(kept only if certified better); 0: the tetrahedra stay the input's");
   t.add(
       "tet_solver", [](CurveOptions& o) -> std::string& { return o.volume.solver.method; },
       one_of(linear_solver_names()),
