@@ -15,6 +15,7 @@
 #include "curving/optimise_volume.h"
 #include "curving/place_on_volume_cad.h"
 #include "element/barycentric_indices.h"
+#include "element/tet_lagrange_basis.h"
 #include "fem/tet_elasticity.h"
 #include "quality/volume_validity.h"
 
@@ -196,14 +197,54 @@ MeshValidity validity_after_split(const VolumeMesh& m, const MeshValidity& befor
   return volume_validity(m, before, known);
 }
 
+// The elastic analogy solved on `input` raised to order q (placed on the CAD
+// there) and interpolated to the order-p mesh m (same tetrahedra, already
+// placed): each node of m inside the volume moves by the displacement of the
+// order-q element it lies in at its lattice point (continuous across elements,
+// so one element per node suffices).
+void solve_elastic_at_order(VolumeMesh& m, const VolumeMesh& input, const VolumeCad& cad, int q,
+                            const VolumeCurveOptions& o, VolumeCurveResult& r) {
+  VolumeMesh mq = raise_volume_order(input, q);
+  const VolumePlacement placed = place_on_volume_cad(mq, cad);
+  if (placed.largest_move <= 0) return;
+  const Eigen::Matrix3Xd straight = mq.x - placed.displacement;
+  const double extent = (mq.x.rowwise().maxCoeff() - mq.x.rowwise().minCoeff()).maxCoeff();
+  solve_elastic(mq, placed.displacement,
+                solve_region(mq, placed.displacement, 1e-12 * extent, o.rings), o, r);
+  const Eigen::Matrix3Xd u = mq.x - straight;
+  const TetLagrangeBasis basis(q);
+  const Eigen::MatrixXi b = barycentric_indices(4, m.order);
+  Eigen::MatrixXd N(basis.size(), b.cols());  // order-q values at the order-p lattice
+  for (Eigen::Index k = 0; k < b.cols(); ++k)
+    N.col(k) = basis.values(Eigen::Vector3d(b(1, k), b(2, k), b(3, k)) / m.order);
+  std::vector<char> done(static_cast<std::size_t>(m.num_nodes()), 0);
+  Eigen::Matrix3Xd U(3, mq.tet.rows());
+  for (int e = 0; e < m.num_tetrahedra(); ++e) {
+    for (Eigen::Index j = 0; j < mq.tet.rows(); ++j) U.col(j) = u.col(mq.tet(j, e));
+    for (Eigen::Index k = 0; k < b.cols(); ++k) {
+      const int i = m.tet(k, e);
+      if (done[i] || m.node_class[i].dim != 3) continue;
+      done[i] = 1;
+      m.x.col(i) += U * N.col(k);
+    }
+  }
+}
+
 }  // namespace
 
 VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const VolumeCurveOptions& o) {
   if (o.order < 2 || o.order > kMaxTetrahedronOrder)
     throw Error("curve: order p = " + std::to_string(o.order) +
                 " is out of range for tetrahedra: 2 to " + std::to_string(kMaxTetrahedronOrder));
+  if (o.solve_order < 0 || o.solve_order == 1 || o.solve_order > kMaxTetrahedronOrder)
+    throw Error("curve: solve order q = " + std::to_string(o.solve_order) +
+                " is out of range for tetrahedra: 0 (the order p) or 2 to " +
+                std::to_string(kMaxTetrahedronOrder));
+  const bool lower = o.elastic && o.solve_order >= 2 && o.solve_order < o.order;
   VolumeCurveResult r;
   auto t0 = std::chrono::steady_clock::now();
+  VolumeMesh input;
+  if (lower) input = m;
   m = raise_volume_order(m, o.order);
   VolumePlacement placed = place_on_volume_cad(m, cad);
   const Eigen::Matrix3Xd d = std::move(placed.displacement);
@@ -215,7 +256,10 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
   t0 = std::chrono::steady_clock::now();
   if (o.elastic && r.largest_move > 0) {
     const double extent = (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).maxCoeff();
-    solve_elastic(m, d, solve_region(m, d, 1e-12 * extent, o.rings), o, r);
+    if (lower)
+      solve_elastic_at_order(m, input, cad, o.solve_order, o, r);
+    else
+      solve_elastic(m, d, solve_region(m, d, 1e-12 * extent, o.rings), o, r);
   }
   r.seconds_solve = curve_seconds_since(t0);
 

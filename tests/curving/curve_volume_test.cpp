@@ -6,6 +6,8 @@
 
 #include "core/error.h"
 #include "core/raise_volume_order.h"
+#include "element/barycentric_indices.h"
+#include "element/tet_lagrange_basis.h"
 #include "quality/volume_validity.h"
 
 using namespace homesh;
@@ -223,6 +225,63 @@ TEST_CASE("curve_volume refuses orders out of range", "[curving][curve_volume]")
   CHECK_THROWS_WITH(curve_volume(m, dome(0.1), o), Catch::Contains("order p = 1 is out of range"));
   o.order = kMaxTetrahedronOrder + 1;
   CHECK_THROWS_AS(curve_volume(m, dome(0.1), o), Error);
+  o.order = 3;
+  for (const int q : {-1, 1, kMaxTetrahedronOrder + 1}) {
+    o.solve_order = q;
+    CHECK_THROWS_WITH(curve_volume(m, dome(0.1), o),
+                      Catch::Contains("solve order q = " + std::to_string(q) + " is out of range"));
+  }
+}
+
+TEST_CASE("curve_volume at a lower solve order interpolates the order-q solution",
+          "[curving][curve_volume]") {
+  // The dome over a 3^3 cube at p = 3 with the analogy solved at q = 2, the
+  // optimiser and splits off: every node inside the volume is the order-2
+  // curved mesh's point at its lattice point (the straight map is affine, so
+  // interpolating the displacement interpolates the curved map), the dome's
+  // nodes are on the dome.
+  const double a = -1.6;
+  VolumeCurveOptions o;
+  o.optimise_threshold = 0;
+  o.order = 2;
+  VolumeMesh quadratic = domed_cube(3, a);
+  const VolumeCurveResult at2 = curve_volume(quadratic, dome(a), o);
+  o.order = 3;
+  o.solve_order = 2;
+  VolumeMesh cubic = domed_cube(3, a);
+  const VolumeCurveResult at3 = curve_volume(cubic, dome(a), o);
+  CHECK(at3.unknowns == at2.unknowns);
+  CHECK(at3.validity.invalid == 0);
+  const TetLagrangeBasis basis(2);
+  const Eigen::MatrixXi b = barycentric_indices(4, 3);
+  int interior = 0;
+  double moved = 0;
+  for (int e = 0; e < cubic.num_tetrahedra(); ++e)
+    for (Eigen::Index k = 0; k < b.cols(); ++k) {
+      const int i = cubic.tet(k, e);
+      const Eigen::Vector3d x = cubic.x.col(i);
+      if (cubic.node_class[i].dim == 3) {
+        ++interior;
+        const Eigen::Vector3d at = quadratic.tetrahedron_nodes(e) *
+                                   basis.values(Eigen::Vector3d(b(1, k), b(2, k), b(3, k)) / 3);
+        CHECK((x - at).norm() < 1e-12);
+      } else if (cubic.node_class[i].dim == 2 && cubic.node_class[i].tag == 6) {
+        CHECK(x(2) == Approx(1 + a * x(0) * (1 - x(0)) * x(1) * (1 - x(1))).margin(1e-14));
+      }
+    }
+  CHECK(interior > 0);
+  // The analogy moved the interior; q >= p solves at p, as 0 does.
+  const VolumeMesh straight = raise_volume_order(domed_cube(3, a), 3);
+  for (int i = 0; i < cubic.num_nodes(); ++i)
+    if (cubic.node_class[i].dim == 3)
+      moved = std::max(moved, (cubic.x.col(i) - straight.x.col(i)).norm());
+  CHECK(moved > 1e-3);
+  VolumeMesh at_p = domed_cube(3, a), at_q = domed_cube(3, a);
+  o.solve_order = 0;
+  curve_volume(at_p, dome(a), o);
+  o.solve_order = 4;
+  curve_volume(at_q, dome(a), o);
+  CHECK(at_p.x == at_q.x);
 }
 
 TEST_CASE("curve_volume: the optimiser mends what moving the boundary alone inverts",
