@@ -1,5 +1,7 @@
 #include "fem/conjugate_gradient.h"
 
+#include "fem/symmetric_product.h"
+
 namespace homesh {
 
 ConjugateGradientResult conjugate_gradient(const Eigen::SparseMatrix<double>& K,
@@ -16,19 +18,17 @@ ConjugateGradientResult conjugate_gradient(const Eigen::SparseMatrix<double>& K,
   }
   if (!K.isCompressed())
     return conjugate_gradient(Eigen::SparseMatrix<double>(K), b, x0, M, tolerance, max_iterations);
-  // K is symmetric: its compressed column storage read as rows is K again, and
-  // Eigen shares a row-major sparse times dense product among its OpenMP
-  // threads (the column-major one runs on one).
-  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> R(
-      K.rows(), K.cols(), K.nonZeros(), K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr());
-  Eigen::VectorXd r = b - R * result.x;
+  const SymmetricProduct K_times(K);
+  Eigen::VectorXd Kx;
+  K_times.apply(result.x, Kx);
+  Eigen::VectorXd r = b - Kx;
   Eigen::VectorXd z, p, Kp(b.size());
   M(r, z);
   p = z;
   double rz = r.dot(z);
   double r_norm = r.norm();
   while (r_norm > tolerance * b_norm && result.iterations < max_iterations) {
-    Kp.noalias() = R * p;
+    K_times.apply(p, Kp);
     const double alpha = rz / p.dot(Kp);
     result.x += alpha * p;
     r -= alpha * Kp;

@@ -16,7 +16,8 @@ struct ConjugateGradientResult {
   bool converged = false;
 };
 
-/// Solves K x = b, K symmetric positive definite (full storage), from the
+/// Solves K x = b, K symmetric positive definite given by its lower triangle
+/// (compressed; fem/symmetric_product.h multiplies by it), from the
 /// initial guess x0 (same size as b; zero if empty), until the recursively
 /// updated residual satisfies ||r|| <= tolerance ||b|| or after max_iterations.
 /// Each iteration: one product with K, one preconditioner application M^-1 r.

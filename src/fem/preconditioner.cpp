@@ -23,7 +23,7 @@ Preconditioner block_jacobi(const Eigen::SparseMatrix<double>& K) {
   // The inverse of each 2 by 2 block [a b; b c], stored as its (a', b', c').
   Eigen::Matrix3Xd inverse(3, nodes);
   for (Eigen::Index i = 0; i < nodes; ++i) {
-    const double a = K.coeff(2 * i, 2 * i), b = K.coeff(2 * i, 2 * i + 1),
+    const double a = K.coeff(2 * i, 2 * i), b = K.coeff(2 * i + 1, 2 * i),
                  c = K.coeff(2 * i + 1, 2 * i + 1);
     const double det = a * c - b * b;
     if (!(a > 0.0 && det > 0.0))

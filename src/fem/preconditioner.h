@@ -14,7 +14,8 @@ using Preconditioner = std::function<void(const Eigen::VectorXd& r, Eigen::Vecto
 /// The preconditioner names, in the order make_preconditioner accepts them.
 const std::vector<std::string>& preconditioner_names();
 
-/// A preconditioner for the symmetric positive definite K (full storage):
+/// A preconditioner for the symmetric positive definite K (full or lower
+/// triangle storage: only the lower triangle is read):
 ///  - "jacobi": M = diag(K);
 ///  - "block_jacobi": M = the 2 by 2 diagonal blocks of the nodes (dofs 2i, 2i+1,
 ///    the interleaved numbering of LinearSystem); the thesis' element-by-element
