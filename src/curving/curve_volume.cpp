@@ -16,6 +16,7 @@
 #include "curving/place_on_volume_cad.h"
 #include "element/barycentric_indices.h"
 #include "element/tet_lagrange_basis.h"
+#include "fem/block_lower_assembly.h"
 #include "fem/tet_elasticity.h"
 #include "quality/volume_validity.h"
 
@@ -74,25 +75,31 @@ void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<c
       for (Eigen::Index k = 0; k < m.tet.rows(); ++k) held[m.tet(k, e)] = 1;
   mark_boundary_faces(m, held);
   std::vector<int> free(static_cast<std::size_t>(m.num_nodes()), -1);
-  int unknowns = 0;
+  int unknowns = 0, elements = 0;
   for (int e = 0; e < m.num_tetrahedra(); ++e) {
     if (!region[e]) continue;
-    ++r.region;
+    ++elements;
     for (Eigen::Index k = 0; k < m.tet.rows(); ++k) {
       const int i = m.tet(k, e);
       if (free[i] < 0 && !held[i] && m.node_class[i].dim == 3) free[i] = unknowns++;
     }
   }
+  r.region += elements;
   r.unknowns = 3 * unknowns;
   if (unknowns == 0) return;
 
   const TetTabulation tab = tetrahedron_tabulation(m.order, 2 * (m.order - 1));
   const double nu = o.nu;
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(3 * unknowns);
   const Eigen::Index n = m.tet.rows();
-  triplets.reserve(static_cast<std::size_t>(r.region) * static_cast<std::size_t>(9 * n * n / 2));
-  for (int e = 0; e < m.num_tetrahedra(); ++e) {
+  Eigen::MatrixXi unknown(n, elements);
+  for (int e = 0, c = 0; e < m.num_tetrahedra(); ++e)
+    if (region[e]) {
+      for (Eigen::Index k = 0; k < n; ++k) unknown(k, c) = free[m.tet(k, e)];
+      ++c;
+    }
+  Eigen::SparseMatrix<double> A = block_lower_pattern(unknown, unknowns);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(3 * unknowns);
+  for (int e = 0, c = 0; e < m.num_tetrahedra(); ++e) {
     if (!region[e]) continue;
     // The element's straight-sided shape before placement: its corners and the
     // affine map (every node but the placed boundary ones is still there).
@@ -104,25 +111,19 @@ void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<c
     const double young = std::pow(volume, -o.stiffening);
     const double lambda = young * nu / ((1 + nu) * (1 - 2 * nu)), mu = young / (2 * (1 + nu));
     const Eigen::MatrixXd K = tetrahedron_stiffness(X, tab, lambda, mu);
+    add_block_lower(A, unknown.col(c++), K);
+    // The held nodes' displacements move the free ones.
     for (Eigen::Index a = 0; a < n; ++a) {
       const int fa = free[m.tet(a, e)];
       if (fa < 0) continue;
       for (Eigen::Index b = 0; b < n; ++b) {
-        const int node_b = m.tet(b, e), fb = free[node_b];
+        const int node_b = m.tet(b, e);
+        if (free[node_b] >= 0) continue;
         for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) {
-            const double k = K(3 * a + i, 3 * b + j);
-            if (fb >= 0) {
-              if (3 * fa + i >= 3 * fb + j) triplets.emplace_back(3 * fa + i, 3 * fb + j, k);
-            } else {
-              rhs(3 * fa + i) -= k * d(j, node_b);
-            }
-          }
+          for (int j = 0; j < 3; ++j) rhs(3 * fa + i) -= K(3 * a + i, 3 * b + j) * d(j, node_b);
       }
     }
   }
-  Eigen::SparseMatrix<double> A(3 * unknowns, 3 * unknowns);
-  A.setFromTriplets(triplets.begin(), triplets.end());
   const LinearSolveResult s = solve_linear_system(A, rhs, o.solver);
   for (int i = 0; i < m.num_nodes(); ++i)
     if (free[i] >= 0) m.x.col(i) += s.x.segment<3>(3 * free[i]);
