@@ -17,7 +17,10 @@
 #include "element/barycentric_indices.h"
 #include "element/tet_lagrange_basis.h"
 #include "fem/block_lower_assembly.h"
+#include "fem/conjugate_gradient.h"
+#include "fem/preconditioner.h"
 #include "fem/tet_elasticity.h"
+#include "fem/two_level_preconditioner.h"
 #include "quality/volume_validity.h"
 
 namespace homesh {
@@ -63,42 +66,48 @@ void mark_boundary_faces(const VolumeMesh& m, std::vector<char>& on) {
   }
 }
 
-// The elastic analogy on the region's tetrahedra: nodes inside the volume and
-// used by region elements only are free; the others keep their displacement d
-// (the CAD's on the boundary, zero where the region meets the held mesh or on a
-// boundary the model gave no surface for).
-void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<char>& region,
-                   const VolumeCurveOptions& o, VolumeCurveResult& r) {
+// The elastic analogy's system on the region's tetrahedra: nodes inside the
+// volume and used by region elements only are free; the others keep their
+// displacement d (the CAD's on the boundary, zero where the region meets the
+// held mesh or on a boundary the model gave no surface for).
+struct ElasticSystem {
+  std::vector<int> free;  // node -> unknown node, -1 if held
+  int unknowns = 0, elements = 0;
+  Eigen::SparseMatrix<double> A;  // lower triangle, 3 unknowns a node
+  Eigen::VectorXd rhs;
+};
+
+ElasticSystem assemble_elastic(const VolumeMesh& m, const Eigen::Matrix3Xd& d,
+                               const std::vector<char>& region, const VolumeCurveOptions& o) {
+  ElasticSystem sys;
   std::vector<char> held(static_cast<std::size_t>(m.num_nodes()), 0);
   for (int e = 0; e < m.num_tetrahedra(); ++e)
     if (!region[e])
       for (Eigen::Index k = 0; k < m.tet.rows(); ++k) held[m.tet(k, e)] = 1;
   mark_boundary_faces(m, held);
-  std::vector<int> free(static_cast<std::size_t>(m.num_nodes()), -1);
-  int unknowns = 0, elements = 0;
+  std::vector<int>& free = sys.free;
+  free.assign(static_cast<std::size_t>(m.num_nodes()), -1);
   for (int e = 0; e < m.num_tetrahedra(); ++e) {
     if (!region[e]) continue;
-    ++elements;
+    ++sys.elements;
     for (Eigen::Index k = 0; k < m.tet.rows(); ++k) {
       const int i = m.tet(k, e);
-      if (free[i] < 0 && !held[i] && m.node_class[i].dim == 3) free[i] = unknowns++;
+      if (free[i] < 0 && !held[i] && m.node_class[i].dim == 3) free[i] = sys.unknowns++;
     }
   }
-  r.region += elements;
-  r.unknowns = 3 * unknowns;
-  if (unknowns == 0) return;
+  if (sys.unknowns == 0) return sys;
 
   const TetTabulation tab = tetrahedron_tabulation(m.order, 2 * (m.order - 1));
   const double nu = o.nu;
   const Eigen::Index n = m.tet.rows();
-  Eigen::MatrixXi unknown(n, elements);
+  Eigen::MatrixXi unknown(n, sys.elements);
   for (int e = 0, c = 0; e < m.num_tetrahedra(); ++e)
     if (region[e]) {
       for (Eigen::Index k = 0; k < n; ++k) unknown(k, c) = free[m.tet(k, e)];
       ++c;
     }
-  Eigen::SparseMatrix<double> A = block_lower_pattern(unknown, unknowns);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(3 * unknowns);
+  sys.A = block_lower_pattern(unknown, sys.unknowns);
+  sys.rhs = Eigen::VectorXd::Zero(3 * sys.unknowns);
   for (int e = 0, c = 0; e < m.num_tetrahedra(); ++e) {
     if (!region[e]) continue;
     // The element's straight-sided shape before placement: its corners and the
@@ -111,7 +120,7 @@ void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<c
     const double young = std::pow(volume, -o.stiffening);
     const double lambda = young * nu / ((1 + nu) * (1 - 2 * nu)), mu = young / (2 * (1 + nu));
     const Eigen::MatrixXd K = tetrahedron_stiffness(X, tab, lambda, mu);
-    add_block_lower(A, unknown.col(c++), K);
+    add_block_lower(sys.A, unknown.col(c++), K);
     // The held nodes' displacements move the free ones.
     for (Eigen::Index a = 0; a < n; ++a) {
       const int fa = free[m.tet(a, e)];
@@ -120,13 +129,80 @@ void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<c
         const int node_b = m.tet(b, e);
         if (free[node_b] >= 0) continue;
         for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) rhs(3 * fa + i) -= K(3 * a + i, 3 * b + j) * d(j, node_b);
+          for (int j = 0; j < 3; ++j) sys.rhs(3 * fa + i) -= K(3 * a + i, 3 * b + j) * d(j, node_b);
       }
     }
   }
-  const LinearSolveResult s = solve_linear_system(A, rhs, o.solver);
+  return sys;
+}
+
+// The order-q values at the order-p lattice: column k for lattice point k.
+Eigen::MatrixXd lower_order_values(int q, int p) {
+  const TetLagrangeBasis basis(q);
+  const Eigen::MatrixXi b = barycentric_indices(4, p);
+  Eigen::MatrixXd N(basis.size(), b.cols());
+  for (Eigen::Index k = 0; k < b.cols(); ++k)
+    N.col(k) = basis.values(Eigen::Vector3d(b(1, k), b(2, k), b(3, k)) / p);
+  return N;
+}
+
+// The prolongation from the order-q system's unknowns to the order-p one's, on
+// the same tetrahedra: an order-p unknown node takes the order-q field of a
+// region element it is in at its lattice point (held order-q nodes give 0).
+Eigen::SparseMatrix<double> prolongation(const VolumeMesh& m, const ElasticSystem& fine,
+                                         const VolumeMesh& mq, const ElasticSystem& coarse) {
+  const Eigen::MatrixXd N = lower_order_values(mq.order, m.order);
+  std::vector<Eigen::Triplet<double>> t;
+  std::vector<char> done(static_cast<std::size_t>(m.num_nodes()), 0);
+  for (int e = 0; e < m.num_tetrahedra(); ++e)
+    for (Eigen::Index k = 0; k < m.tet.rows(); ++k) {
+      const int i = m.tet(k, e), fi = fine.free[i];
+      if (fi < 0 || done[i]) continue;
+      done[i] = 1;
+      for (Eigen::Index j = 0; j < mq.tet.rows(); ++j) {
+        const int fj = coarse.free[mq.tet(j, e)];
+        if (fj < 0 || N(j, k) == 0) continue;
+        for (int c = 0; c < 3; ++c) t.emplace_back(3 * fi + c, 3 * fj + c, N(j, k));
+      }
+    }
+  Eigen::SparseMatrix<double> P(3 * fine.unknowns, 3 * coarse.unknowns);
+  P.setFromTriplets(t.begin(), t.end());
+  return P;
+}
+
+// The elastic analogy on the region's tetrahedra (assemble_elastic), solved as
+// the options ask; with `coarse_mesh` (the same tetrahedra at a lower order,
+// placed on the CAD: its displacement coarse_d) by CG with the two-level
+// preconditioner (fem/two_level_preconditioner.h) whose coarse system is
+// theirs. The spaces are nested and the straight-sided stiffness integrated
+// exactly at both orders, so that system is the fine one's Galerkin
+// restriction.
+void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<char>& region,
+                   const VolumeCurveOptions& o, VolumeCurveResult& r,
+                   const VolumeMesh* coarse_mesh = nullptr,
+                   const Eigen::Matrix3Xd* coarse_d = nullptr) {
+  const ElasticSystem sys = assemble_elastic(m, d, region, o);
+  r.region += sys.elements;
+  r.unknowns = 3 * sys.unknowns;
+  if (sys.unknowns == 0) return;
+  Eigen::VectorXd x;
+  if (coarse_mesh) {
+    const ElasticSystem c = assemble_elastic(*coarse_mesh, *coarse_d, region, o);
+    const Preconditioner M =
+        two_level_preconditioner(make_preconditioner(o.solver.preconditioner, sys.A),
+                                 prolongation(m, sys, *coarse_mesh, c), c.A);
+    const int limit = o.solver.max_iterations > 0 ? o.solver.max_iterations : 3 * sys.unknowns;
+    ConjugateGradientResult cg =
+        conjugate_gradient(sys.A, sys.rhs, Eigen::VectorXd(), M, o.solver.tolerance, limit);
+    if (!cg.converged)
+      throw Error("curve: the two-level CG did not converge in " + std::to_string(cg.iterations) +
+                  " iterations (relative residual " + std::to_string(cg.relative_residual) + ")");
+    x = std::move(cg.x);
+  } else {
+    x = solve_linear_system(sys.A, sys.rhs, o.solver).x;
+  }
   for (int i = 0; i < m.num_nodes(); ++i)
-    if (free[i] >= 0) m.x.col(i) += s.x.segment<3>(3 * free[i]);
+    if (sys.free[i] >= 0) m.x.col(i) += x.segment<3>(3 * sys.free[i]);
 }
 
 // How to split each invalid wall cap. A cap with two wall faces (sharing a wall
@@ -213,16 +289,12 @@ void solve_elastic_at_order(VolumeMesh& m, const VolumeMesh& input, const Volume
   solve_elastic(mq, placed.displacement,
                 solve_region(mq, placed.displacement, 1e-12 * extent, o.rings), o, r);
   const Eigen::Matrix3Xd u = mq.x - straight;
-  const TetLagrangeBasis basis(q);
-  const Eigen::MatrixXi b = barycentric_indices(4, m.order);
-  Eigen::MatrixXd N(basis.size(), b.cols());  // order-q values at the order-p lattice
-  for (Eigen::Index k = 0; k < b.cols(); ++k)
-    N.col(k) = basis.values(Eigen::Vector3d(b(1, k), b(2, k), b(3, k)) / m.order);
+  const Eigen::MatrixXd N = lower_order_values(q, m.order);
   std::vector<char> done(static_cast<std::size_t>(m.num_nodes()), 0);
   Eigen::Matrix3Xd U(3, mq.tet.rows());
   for (int e = 0; e < m.num_tetrahedra(); ++e) {
     for (Eigen::Index j = 0; j < mq.tet.rows(); ++j) U.col(j) = u.col(mq.tet(j, e));
-    for (Eigen::Index k = 0; k < b.cols(); ++k) {
+    for (Eigen::Index k = 0; k < m.tet.rows(); ++k) {
       const int i = m.tet(k, e);
       if (done[i] || m.node_class[i].dim != 3) continue;
       done[i] = 1;
@@ -245,7 +317,9 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
   VolumeCurveResult r;
   auto t0 = std::chrono::steady_clock::now();
   VolumeMesh input;
-  if (lower) input = m;
+  const bool two_level =
+      o.elastic && o.two_level && !lower && o.order > 2 && o.solver.method == "cg";
+  if (lower || two_level) input = m;
   m = raise_volume_order(m, o.order);
   VolumePlacement placed = place_on_volume_cad(m, cad);
   const Eigen::Matrix3Xd d = std::move(placed.displacement);
@@ -259,7 +333,11 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
     const double extent = (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).maxCoeff();
     if (lower)
       solve_elastic_at_order(m, input, cad, o.solve_order, o, r);
-    else
+    else if (two_level) {
+      VolumeMesh mq = raise_volume_order(input, 2);
+      const Eigen::Matrix3Xd dq = place_on_volume_cad(mq, cad).displacement;
+      solve_elastic(m, d, solve_region(m, d, 1e-12 * extent, o.rings), o, r, &mq, &dq);
+    } else
       solve_elastic(m, d, solve_region(m, d, 1e-12 * extent, o.rings), o, r);
   }
   r.seconds_solve = curve_seconds_since(t0);

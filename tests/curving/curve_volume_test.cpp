@@ -233,6 +233,26 @@ TEST_CASE("curve_volume refuses orders out of range", "[curving][curve_volume]")
   }
 }
 
+TEST_CASE("curve_volume: two-level CG gives the mesh one-level CG gives",
+          "[curving][curve_volume]") {
+  const double a = -1.6;
+  VolumeCurveOptions o;
+  o.order = 3;
+  o.optimise_threshold = 0;
+  o.solver.tolerance = 1e-10;
+  VolumeMesh one = domed_cube(3, a), two = domed_cube(3, a);
+  o.two_level = false;
+  const VolumeCurveResult r1 = curve_volume(one, dome(a), o);
+  o.two_level = true;
+  const VolumeCurveResult r2 = curve_volume(two, dome(a), o);
+  CHECK(r1.unknowns == r2.unknowns);
+  CHECK(r2.unknowns > 0);
+  CHECK((one.x - two.x).cwiseAbs().maxCoeff() < 1e-9);
+  // Not trivially: the interior moved.
+  const VolumeMesh straight = raise_volume_order(domed_cube(3, a), 3);
+  CHECK((two.x - straight.x).cwiseAbs().maxCoeff() > 1e-3);
+}
+
 TEST_CASE("curve_volume at a lower solve order interpolates the order-q solution",
           "[curving][curve_volume]") {
   // The dome over a 3^3 cube at p = 3 with the analogy solved at q = 2, the

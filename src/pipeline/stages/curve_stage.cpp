@@ -269,6 +269,10 @@ Stage curve_stage() {
       "tetrahedra: the elastic solve takes the elements with a moved node and this many "
       "layers round them; the rest is held");
   t.add(
+      "tet_two_level", [](CurveOptions& o) -> bool& { return o.volume.two_level; }, boolean(),
+      "tetrahedra, p >= 3, tet_solver=cg: precondition CG by two levels, Jacobi and the "
+      "analogy at order 2 solved exactly (the same mesh in a third of the iterations)");
+  t.add(
       "tet_solve_order", [](CurveOptions& o) -> int& { return o.volume.solve_order; },
       integer(0, kMaxTetrahedronOrder),
       "tetrahedra: solve the elastic analogy at this order q (2 to p - 1) and interpolate it "
