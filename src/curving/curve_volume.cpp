@@ -198,8 +198,12 @@ void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<c
       throw Error("curve: the two-level CG did not converge in " + std::to_string(cg.iterations) +
                   " iterations (relative residual " + std::to_string(cg.relative_residual) + ")");
     x = std::move(cg.x);
+    r.iterations += cg.iterations;
+    r.two_level = true;
   } else {
-    x = solve_linear_system(sys.A, sys.rhs, o.solver).x;
+    LinearSolveResult s = solve_linear_system(sys.A, sys.rhs, o.solver);
+    r.iterations += s.iterations;
+    x = std::move(s.x);
   }
   for (int i = 0; i < m.num_nodes(); ++i)
     if (sys.free[i] >= 0) m.x.col(i) += x.segment<3>(3 * sys.free[i]);
@@ -318,7 +322,7 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
   auto t0 = std::chrono::steady_clock::now();
   VolumeMesh input;
   const bool two_level =
-      o.elastic && o.two_level && !lower && o.order > 2 && o.solver.method == "cg";
+      o.elastic && o.two_level && !lower && o.order >= 4 && o.solver.method == "cg";
   if (lower || two_level) input = m;
   m = raise_volume_order(m, o.order);
   VolumePlacement placed = place_on_volume_cad(m, cad);

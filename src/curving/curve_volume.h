@@ -66,11 +66,14 @@ struct VolumeCurveOptions {
   /// 0; q = 2 for meshes whose order-p solve would not fit in memory, or where
   /// time matters more than the last tenth of minJ/maxJ.
   int solve_order = 0;
-  /// At p >= 3 with the "cg" solver: precondition CG by two levels, the
+  /// At p >= 4 with the "cg" solver: precondition CG by two levels, the
   /// solver's preconditioner (Jacobi) plus the same analogy at order 2 solved
   /// exactly (CHOLMOD) and interpolated (fem/two_level_preconditioner.h). The
   /// same mesh to the solver's tolerance in fewer iterations: on the fine torus
-  /// at p = 4, 86 against 248, the solve 6.6 s against 13.6 s.
+  /// at p = 4, 86 against 248; on the 3D corpus at p = 4 the solve 1.7-3.0x
+  /// faster and the curving's peak memory 1.9-2.2x lower. At p = 3 the coarse
+  /// factorisation cost more than the iterations it saved (fine torus: solve
+  /// 2.8 s against 1.7 s), so there CG stays one-level.
   bool two_level = true;
   /// The solve: CG with the Jacobi preconditioner to 1e-6, which gave the same
   /// mesh (worst minJ/maxJ to 4 digits) in half CHOLMOD's time and memory on
@@ -112,6 +115,10 @@ struct VolumeCurveResult {
   /// Tetrahedra and unknowns of the elastic solve.
   int region = 0;
   int unknowns = 0;
+  /// CG's iterations in the elastic solve (0 for a direct solver), and whether
+  /// it was preconditioned by two levels (two_level).
+  int iterations = 0;
+  bool two_level = false;
   /// The optimiser's patches and those it kept, and the worst minJ/maxJ before it.
   int patches = 0, optimised = 0;
   /// Wall caps split, at an edge or their centroid (split_wall_caps); each

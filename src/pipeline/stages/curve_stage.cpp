@@ -50,25 +50,27 @@ void run_volume(Context& ctx, const CurveOptions& o) {
   v.order = o.order;
   VolumeMesh& m = *ctx.volume;
   const VolumeCad cad = gmsh_adapter::volume_cad();
+  const int input_tetrahedra = m.num_tetrahedra();
   const VolumeCurveResult r = curve_volume(m, cad, v);
   ctx.fields.clear();
   ctx.certify_volume(r.validity);  // the writers reuse it
   ctx.log.info(
       "curve: p = {}, {} tetrahedra: {} boundary nodes put on the CAD ({} by projection; "
       "largest move {:.3g}), "
-      "elastic solve on {} tetrahedra ({} unknowns); {:.3f} s placing, {:.3f} s solving, {:.3f} "
-      "s certifying",
+      "elastic solve on {} tetrahedra ({} unknowns, {} CG iterations{}); {:.3f} s placing, "
+      "{:.3f} s solving, {:.3f} s certifying",
       v.order, m.num_tetrahedra(), r.placed, r.projected, r.largest_move, r.region, r.unknowns,
-      r.seconds_place, r.seconds_solve, r.seconds_certify);
+      r.iterations, r.two_level ? ", two-level" : "", r.seconds_place, r.seconds_solve,
+      r.seconds_certify);
   if (r.patches > 0)
     ctx.log.info("  optimiser: {} of {} patches kept, worst minJ/maxJ {:.4f} -> {:.4f} ({:.3f} s)",
                  r.optimised, r.patches, r.worst_before_optimiser, r.validity.worst,
                  r.seconds_optimise);
   if (r.split > 0)
     ctx.log.info(
-        "  {} tetrahedra with four corners on the wall, left invalid, split at their centroid "
-        "(+{} tetrahedra)",
-        r.split, 3 * r.split);
+        "  {} tetrahedra with four corners on the wall split (at an edge on the wall or their "
+        "centroid): {} tetrahedra, {} before",
+        r.split, m.num_tetrahedra(), input_tetrahedra);
   ctx.log.info("  {}", validity_line(m, r.validity));
   ctx.results = {{"patches", r.patches},
                  {"split", r.split},
@@ -80,6 +82,7 @@ void run_volume(Context& ctx, const CurveOptions& o) {
                  {"projected", r.projected},
                  {"region", r.region},
                  {"unknowns", r.unknowns},
+                 {"iterations", r.iterations},
                  {"seconds_place", r.seconds_place},
                  {"seconds_solve", r.seconds_solve}};
 }
@@ -270,7 +273,7 @@ Stage curve_stage() {
       "layers round them; the rest is held");
   t.add(
       "tet_two_level", [](CurveOptions& o) -> bool& { return o.volume.two_level; }, boolean(),
-      "tetrahedra, p >= 3, tet_solver=cg: precondition CG by two levels, Jacobi and the "
+      "tetrahedra, p >= 4, tet_solver=cg: precondition CG by two levels, Jacobi and the "
       "analogy at order 2 solved exactly (the same mesh in a third of the iterations)");
   t.add(
       "tet_solve_order", [](CurveOptions& o) -> int& { return o.volume.solve_order; },
