@@ -57,14 +57,15 @@ struct VolumeCurveOptions {
   /// placed on the CAD there, and give each order-p node inside the volume the
   /// displacement the order-q elements interpolate at it (the wall nodes are
   /// placed at order p as ever). 0 (or q >= p): solve at p. At p = 4, q = 2
-  /// solves a system 8x smaller. On the 3D corpus at p = 3-4 with q = 2 the
-  /// curving was faster in 21 of 24 runs, up to 8x (fine torus p = 4: 3.6 s and
-  /// 0.28 GB against 24 s and 2.7 GB), with 1.3-10x less memory; but its worst
-  /// fell in 19 (by up to 0.17: fine ellipsoid p = 4, 0.708 -> 0.534) and rose
-  /// in 5 (the wing at p = 4: 0.574 -> 0.868), and where the optimiser then had
-  /// more to do it was slower (coarse ellipsoid p = 4: 4.5 -> 10.7 s). Hence
-  /// 0; q = 2 for meshes whose order-p solve would not fit in memory, or where
-  /// time matters more than the last tenth of minJ/maxJ.
+  /// solves a system 8x smaller. On the 3D corpus at p = 3-4 (against the
+  /// default, two-level CG at p = 4) q = 2 was faster in 18 of 24 runs, up to
+  /// 5.7x, with 1.1-5.6x less memory (fine close spheres p = 4: 4.0 s and
+  /// 0.23 GB against 11 s and 1.3 GB); but its worst fell in 19 (by up to
+  /// 0.17: fine ellipsoid p = 4, 0.707 -> 0.534) and rose in 5 (the wing at
+  /// p = 4: 0.573 -> 0.867), and where the optimiser then had more to do it
+  /// was slower (coarse ellipsoid p = 4: 2.7 -> 8.5 s). Hence 0; q = 2 for
+  /// meshes whose order-p solve would not fit in memory, or where time matters
+  /// more than the last tenth of minJ/maxJ.
   int solve_order = 0;
   /// At p >= 4 with the "cg" solver: precondition CG by two levels, the
   /// solver's preconditioner (Jacobi) plus the same analogy at order 2 solved
