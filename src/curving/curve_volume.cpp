@@ -18,6 +18,7 @@
 #include "element/tet_lagrange_basis.h"
 #include "fem/block_lower_assembly.h"
 #include "fem/conjugate_gradient.h"
+#include "fem/petsc_solver.h"
 #include "fem/preconditioner.h"
 #include "fem/tet_elasticity.h"
 #include "fem/two_level_preconditioner.h"
@@ -74,11 +75,17 @@ struct ElasticSystem {
   std::vector<int> free;  // node -> unknown node, -1 if held
   int unknowns = 0, elements = 0;
   Eigen::SparseMatrix<double> A;  // lower triangle, 3 unknowns a node
-  Eigen::VectorXd rhs;
+  // Or, for a distributed solve (fem/petsc_solver.h), this process's rows.
+  RowShare share;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> rows;
+  Eigen::VectorXd rhs;  // of all rows, or of this process's
 };
 
+// distributed: assemble only this process's rows (petsc_rows), from the
+// elements that have an unknown in them.
 ElasticSystem assemble_elastic(const VolumeMesh& m, const Eigen::Matrix3Xd& d,
-                               const std::vector<char>& region, const VolumeCurveOptions& o) {
+                               const std::vector<char>& region, const VolumeCurveOptions& o,
+                               bool distributed = false) {
   ElasticSystem sys;
   std::vector<char> held(static_cast<std::size_t>(m.num_nodes()), 0);
   for (int e = 0; e < m.num_tetrahedra(); ++e)
@@ -106,10 +113,29 @@ ElasticSystem assemble_elastic(const VolumeMesh& m, const Eigen::Matrix3Xd& d,
       for (Eigen::Index k = 0; k < n; ++k) unknown(k, c) = free[m.tet(k, e)];
       ++c;
     }
-  sys.A = block_lower_pattern(unknown, sys.unknowns);
-  sys.rhs = Eigen::VectorXd::Zero(3 * sys.unknowns);
+  if (distributed) {
+    sys.share = petsc_rows(3 * sys.unknowns);
+    sys.rows = block_rows_pattern(unknown, sys.unknowns, sys.share.first, sys.share.count);
+    sys.rhs = Eigen::VectorXd::Zero(sys.share.count);
+  } else {
+    sys.A = block_lower_pattern(unknown, sys.unknowns);
+    sys.rhs = Eigen::VectorXd::Zero(3 * sys.unknowns);
+  }
+  const int lo_row = sys.share.first;
+  const auto mine = [&](int fa) {  // whether unknown node fa has a row of this process
+    return !distributed ||
+           (3 * fa + 2 >= sys.share.first && 3 * fa < sys.share.first + sys.share.count);
+  };
   for (int e = 0, c = 0; e < m.num_tetrahedra(); ++e) {
     if (!region[e]) continue;
+    if (distributed) {
+      bool any = false;
+      for (Eigen::Index k = 0; k < n && !any; ++k) any = unknown(k, c) >= 0 && mine(unknown(k, c));
+      if (!any) {
+        ++c;
+        continue;
+      }
+    }
     // The element's straight-sided shape before placement: its corners and the
     // affine map (every node but the placed boundary ones is still there).
     Eigen::Matrix3Xd X = m.tetrahedron_nodes(e);
@@ -120,16 +146,22 @@ ElasticSystem assemble_elastic(const VolumeMesh& m, const Eigen::Matrix3Xd& d,
     const double young = std::pow(volume, -o.stiffening);
     const double lambda = young * nu / ((1 + nu) * (1 - 2 * nu)), mu = young / (2 * (1 + nu));
     const Eigen::MatrixXd K = tetrahedron_stiffness(X, tab, lambda, mu);
-    add_block_lower(sys.A, unknown.col(c++), K);
+    if (distributed)
+      add_block_rows(sys.rows, sys.share.first, unknown.col(c++), K);
+    else
+      add_block_lower(sys.A, unknown.col(c++), K);
     // The held nodes' displacements move the free ones.
     for (Eigen::Index a = 0; a < n; ++a) {
       const int fa = free[m.tet(a, e)];
-      if (fa < 0) continue;
+      if (fa < 0 || !mine(fa)) continue;
       for (Eigen::Index b = 0; b < n; ++b) {
         const int node_b = m.tet(b, e);
         if (free[node_b] >= 0) continue;
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) sys.rhs(3 * fa + i) -= K(3 * a + i, 3 * b + j) * d(j, node_b);
+        for (int i = 0; i < 3; ++i) {
+          const int row = 3 * fa + i - lo_row;
+          if (row < 0 || row >= sys.rhs.size()) continue;
+          for (int j = 0; j < 3; ++j) sys.rhs(row) -= K(3 * a + i, 3 * b + j) * d(j, node_b);
+        }
       }
     }
   }
@@ -181,12 +213,19 @@ void solve_elastic(VolumeMesh& m, const Eigen::Matrix3Xd& d, const std::vector<c
                    const VolumeCurveOptions& o, VolumeCurveResult& r,
                    const VolumeMesh* coarse_mesh = nullptr,
                    const Eigen::Matrix3Xd* coarse_d = nullptr) {
-  const ElasticSystem sys = assemble_elastic(m, d, region, o);
+  // PETSc: each process assembles only its rows (all of them in one process),
+  // so the system's memory is shared among the processes.
+  const bool distributed = o.solver.method == "petsc";
+  const ElasticSystem sys = assemble_elastic(m, d, region, o, distributed);
   r.region += sys.elements;
   r.unknowns = 3 * sys.unknowns;
   if (sys.unknowns == 0) return;
   Eigen::VectorXd x;
-  if (coarse_mesh) {
+  if (distributed) {
+    LinearSolveResult s = petsc_solve_rows(3 * sys.unknowns, sys.rows, sys.rhs, {}, o.solver);
+    r.iterations += s.iterations;
+    x = std::move(s.x);
+  } else if (coarse_mesh) {
     const ElasticSystem c = assemble_elastic(*coarse_mesh, *coarse_d, region, o);
     const Preconditioner M =
         two_level_preconditioner(make_preconditioner(o.solver.preconditioner, sys.A),

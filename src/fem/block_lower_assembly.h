@@ -22,4 +22,16 @@ Eigen::SparseMatrix<double> block_lower_pattern(const Eigen::MatrixXi& unknown, 
 void add_block_lower(Eigen::SparseMatrix<double>& A, const Eigen::Ref<const Eigen::VectorXi>& u,
                      const Eigen::MatrixXd& Ke);
 
+/// Rows [first, first + count) of the full symmetric system (both triangles)
+/// that block_lower_pattern's lower triangle stands for, as a count by 3 n
+/// row-major pattern (values zero): a process's share of a distributed solve
+/// (fem/petsc_solver.h), which needs no other rows.
+Eigen::SparseMatrix<double, Eigen::RowMajor> block_rows_pattern(const Eigen::MatrixXi& unknown,
+                                                                int nodes, int first, int count);
+
+/// Adds the element matrix Ke's entries in rows [first, first + A.rows()) into
+/// A, which has block_rows_pattern's pattern for this `first`.
+void add_block_rows(Eigen::SparseMatrix<double, Eigen::RowMajor>& A, int first,
+                    const Eigen::Ref<const Eigen::VectorXi>& u, const Eigen::MatrixXd& Ke);
+
 }  // namespace homesh

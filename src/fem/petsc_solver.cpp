@@ -77,26 +77,46 @@ ParallelSession::~ParallelSession() {
   if (initialised_) PetscFinalize();
 }
 
+RowShare petsc_rows(int n) {
+  if (!mpi_launched()) return {0, n};
+  ensure_petsc();
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  return {rank * (n / size) + std::min(rank, n % size), n / size + (rank < n % size ? 1 : 0)};
+}
+
 LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& full,
                               const Eigen::VectorXd& b, const Eigen::VectorXd& guess,
                               const LinearSolverOptions& o) {
   ensure_petsc();
-  const MPI_Comm comm = PETSC_COMM_WORLD;
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  const PetscInt n = static_cast<PetscInt>(full.rows());
-  // Rows split as PETSc's PETSC_DECIDE does: n / size each, the first n % size one more.
-  const PetscInt local = n / size + (rank < n % size ? 1 : 0);
-  const PetscInt first = rank * (n / size) + std::min<PetscInt>(rank, n % size);
+  const int n = static_cast<int>(full.rows());
+  const RowShare share = petsc_rows(n);
+  return petsc_solve_rows(
+      n, full.middleRows(share.first, share.count), b.segment(share.first, share.count),
+      guess.size() ? Eigen::VectorXd(guess.segment(share.first, share.count)) : Eigen::VectorXd(),
+      o);
+}
 
+LinearSolveResult petsc_solve_rows(int n_rows,
+                                   const Eigen::SparseMatrix<double, Eigen::RowMajor>& mine,
+                                   const Eigen::VectorXd& b, const Eigen::VectorXd& guess,
+                                   const LinearSolverOptions& o) {
+  ensure_petsc();
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  const PetscInt n = static_cast<PetscInt>(n_rows);
+  const RowShare share = petsc_rows(n_rows);
+  const PetscInt local = share.count;
+  if (mine.rows() != local || mine.cols() != n || b.size() != local ||
+      (guess.size() && guess.size() != local))
+    throw Error("solve_linear_system: petsc got " + std::to_string(mine.rows()) +
+                " rows for this process's " + std::to_string(local));
   // This process's rows of the matrix, in CSR.
   std::vector<PetscInt> row(static_cast<std::size_t>(local) + 1), col;
   std::vector<PetscScalar> value;
   row[0] = 0;
   for (PetscInt i = 0; i < local; ++i) {
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(full, first + i); it;
-         ++it) {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(mine, i); it; ++it) {
       col.push_back(static_cast<PetscInt>(it.col()));
       value.push_back(it.value());
     }
@@ -114,8 +134,8 @@ LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>
     check(VecGetArray(rhs.p, &r), "VecGetArray");
     check(VecGetArray(x.p, &s), "VecGetArray");
     for (PetscInt i = 0; i < local; ++i) {
-      r[i] = b(first + i);
-      s[i] = guess.size() ? guess(first + i) : 0.0;
+      r[i] = b(i);
+      s[i] = guess.size() ? guess(i) : 0.0;
     }
     VecRestoreArray(rhs.p, &r);
     VecRestoreArray(x.p, &s);
@@ -158,8 +178,9 @@ LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>
   for (PetscInt i = 0; i < n; ++i) out.x(i) = a[i];
   VecRestoreArrayRead(all.p, &a);
   out.iterations = static_cast<int>(iterations);
-  const double bn = b.norm();
-  out.relative_residual = bn > 0 ? static_cast<double>(residual) / bn : 0.0;
+  PetscReal b_norm = 0;
+  check(VecNorm(rhs.p, NORM_2, &b_norm), "VecNorm");
+  out.relative_residual = b_norm > 0 ? static_cast<double>(residual / b_norm) : 0.0;
   return out;
 }
 
@@ -169,6 +190,14 @@ bool petsc_available() { return false; }
 
 ParallelSession::ParallelSession() {}
 ParallelSession::~ParallelSession() = default;
+
+RowShare petsc_rows(int n) { return {0, n}; }
+
+LinearSolveResult petsc_solve_rows(int, const Eigen::SparseMatrix<double, Eigen::RowMajor>&,
+                                   const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                   const LinearSolverOptions& o) {
+  return petsc_solve({}, {}, {}, o);
+}
 
 LinearSolveResult petsc_solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>&,
                               const Eigen::VectorXd&, const Eigen::VectorXd&,
