@@ -13,6 +13,7 @@ Preconditioner two_level_preconditioner(Preconditioner smoother, Eigen::SparseMa
   if (coarse.rows() != coarse.cols() || P.cols() != coarse.rows())
     throw Error("two_level_preconditioner: the prolongation has " + std::to_string(P.cols()) +
                 " columns for a coarse system of " + std::to_string(coarse.rows()) + " unknowns");
+  if (coarse.rows() == 0) return smoother;  // no coarse space: one level
   auto factor = std::make_shared<CholmodFactor>();
   factor->analyze(coarse);
   factor->factorize(coarse);

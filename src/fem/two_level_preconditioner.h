@@ -14,7 +14,8 @@
 namespace homesh {
 
 /// M^-1 r = smoother(r) + P Kc^-1 P^T r, Kc (lower triangle read) factorised
-/// once by CHOLMOD. P is fine unknowns by coarse unknowns. Throws
+/// once by CHOLMOD. P is fine unknowns by coarse unknowns; a coarse system of
+/// no unknowns leaves the smoother alone. Throws
 /// homesh::Error if Kc is not positive definite or the sizes disagree.
 Preconditioner two_level_preconditioner(Preconditioner smoother, Eigen::SparseMatrix<double> P,
                                         const Eigen::SparseMatrix<double>& coarse);

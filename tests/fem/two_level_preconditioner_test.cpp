@@ -64,6 +64,12 @@ TEST_CASE("two_level_preconditioner: CG with a coarse space converges in a bound
     CHECK(y.dot(Mx) == Approx(x.dot(My)).epsilon(1e-12));
   }
   const Eigen::SparseMatrix<double> K = laplacian(5);
+  // No coarse unknowns (a region whose lower-order nodes are all held): Jacobi.
+  const Preconditioner alone = two_level_preconditioner(
+      make_preconditioner("jacobi", K), Eigen::SparseMatrix<double>(5, 0), laplacian(0));
+  Eigen::VectorXd z;
+  alone(Eigen::VectorXd::Ones(5), z);
+  CHECK((z - Eigen::VectorXd::Constant(5, 0.5)).norm() == 0.0);
   CHECK_THROWS_AS(two_level_preconditioner(make_preconditioner("jacobi", K),
                                            Eigen::SparseMatrix<double>(5, 3), laplacian(2)),
                   Error);
