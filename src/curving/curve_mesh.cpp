@@ -120,8 +120,7 @@ CurveResult curve_mesh(const Mesh& m, const std::function<Eigen::Matrix2Xd(Mesh&
     if (opt.propagate > 0 && !good(placed_validity)) {
       placed.x.swap(other);
       MeshValidity w = mesh_validity(placed, opt.optimiser.bounds);
-      if (w.invalid < placed_validity.invalid ||
-          (w.invalid == placed_validity.invalid && w.worst > placed_validity.worst)) {
+      if (certified_better(w.invalid, w.worst, placed_validity.invalid, placed_validity.worst)) {
         placed_validity = std::move(w);
         r.guess = "propagated";
       } else {

@@ -22,6 +22,7 @@
 #include "fem/preconditioner.h"
 #include "fem/tet_elasticity.h"
 #include "fem/two_level_preconditioner.h"
+#include "quality/mesh_validity.h"
 #include "quality/volume_validity.h"
 
 namespace homesh {
@@ -44,12 +45,13 @@ std::vector<char> solve_region(const VolumeMesh& m, const Eigen::Matrix3Xd& d, d
   return in;
 }
 
-// Marks the nodes on the faces of m's tetrahedra that only one tetrahedron has:
-// the mesh's boundary, whether or not the model gave triangles for it.
-void mark_boundary_faces(const VolumeMesh& m, std::vector<char>& on) {
+// The faces of m's tetrahedra that only one tetrahedron has, the mesh's
+// boundary whether or not the model gave triangles for it: (tetrahedron e,
+// face f), face f being the corners but corner f.
+std::vector<std::pair<int, int>> boundary_faces(const VolumeMesh& m) {
   std::map<std::array<int, 3>, std::pair<int, int>> faces;  // sorted corners -> (count, e * 4 + f)
   for (int e = 0; e < m.num_tetrahedra(); ++e)
-    for (int f = 0; f < 4; ++f) {  // face f: the corners but corner f
+    for (int f = 0; f < 4; ++f) {
       std::array<int, 3> c;
       for (int k = 0, n = 0; k < 4; ++k)
         if (k != f) c[n++] = m.tet(k, e);
@@ -58,13 +60,18 @@ void mark_boundary_faces(const VolumeMesh& m, std::vector<char>& on) {
       ++count;
       where = 4 * e + f;
     }
+  std::vector<std::pair<int, int>> out;
+  for (const auto& [corners, use] : faces)
+    if (use.first == 1) out.emplace_back(use.second / 4, use.second % 4);
+  return out;
+}
+
+// Marks the nodes on the mesh's boundary faces (boundary_faces).
+void mark_boundary_faces(const VolumeMesh& m, std::vector<char>& on) {
   const Eigen::MatrixXi b = barycentric_indices(4, m.order);
-  for (const auto& [corners, use] : faces) {
-    if (use.first != 1) continue;
-    const int e = use.second / 4, f = use.second % 4;
+  for (const auto& [e, f] : boundary_faces(m))
     for (Eigen::Index k = 0; k < b.cols(); ++k)
       if (b(f, k) == 0) on[m.tet(k, e)] = 1;
-  }
 }
 
 // The elastic analogy's system on the region's tetrahedra: nodes inside the
@@ -260,20 +267,13 @@ struct CapSplits {
 };
 
 CapSplits cap_splits(const VolumeMesh& m, const std::vector<int>& caps) {
-  std::map<std::array<int, 3>, int> faces;
-  for (int e = 0; e < m.num_tetrahedra(); ++e)
-    for (int f = 0; f < 4; ++f) {
-      std::array<int, 3> c;
-      for (int k = 0, n = 0; k < 4; ++k)
-        if (k != f) c[n++] = m.tet(k, e);
-      std::sort(c.begin(), c.end());
-      ++faces[c];
-    }
-  std::set<std::pair<int, int>> boundary_edges;
-  for (const auto& [c, count] : faces)
-    if (count == 1)
-      for (int i = 0; i < 3; ++i)
-        for (int j = i + 1; j < 3; ++j) boundary_edges.insert({c[i], c[j]});
+  std::set<std::pair<int, int>> boundary_edges;  // (smaller, larger corner)
+  for (const auto& [e, f] : boundary_faces(m))
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        if (i != f && j != f)
+          boundary_edges.insert(
+              {std::min(m.tet(i, e), m.tet(j, e)), std::max(m.tet(i, e), m.tet(j, e))});
   CapSplits out;
   for (const int e : caps) {
     std::vector<std::pair<int, int>> inner;
@@ -436,7 +436,7 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
     for (int e = 0; e < m.num_tetrahedra(); ++e)
       if (r.validity.min_det(e) <= 0) invalid[from[e]] = 1;
     const int now = static_cast<int>(std::count(invalid.begin(), invalid.end(), 1));
-    if (now < before.invalid || (now == before.invalid && r.validity.worst > before.worst)) {
+    if (certified_better(now, r.validity.worst, before.invalid, before.worst)) {
       r.split += static_cast<int>(how.centroid.size() + how.edges.size());
     } else {
       m = std::move(unsplit);
@@ -481,8 +481,8 @@ VolumeCurveResult curve_volume(VolumeMesh& m, const VolumeCad& cad, const Volume
       r.split = 0;
       optimise({});
       mend_invalid_caps();
-      if (with.validity.invalid < r.validity.invalid ||
-          (with.validity.invalid == r.validity.invalid && with.validity.worst > r.validity.worst)) {
+      if (certified_better(with.validity.invalid, with.validity.worst, r.validity.invalid,
+                           r.validity.worst)) {
         m = std::move(split);
         r.validity = with.validity;
         r.split = with.split;

@@ -11,6 +11,10 @@ bool equal(const Eigen::MatrixXi& a, const Eigen::MatrixXi& b) {
 
 }  // namespace
 
+bool certified_better(int invalid, double worst, int than_invalid, double than_worst) {
+  return invalid < than_invalid || (invalid == than_invalid && worst > than_worst);
+}
+
 void count_validity(MeshValidity& v) {
   v.invalid = v.unconverged = 0;
   v.worst = 1.0;

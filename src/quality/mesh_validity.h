@@ -41,6 +41,12 @@ struct MeshValidity {
 /// min_det (valid: > 0, as JacobianBounds::valid_certified), converged and ratio.
 void count_validity(MeshValidity& v);
 
+/// Whether a mesh with `invalid` invalid elements and worst minJ/maxJ `worst` is
+/// certified better than one with `than_invalid` and `than_worst`: fewer invalid
+/// elements, or as many and a higher worst. The rule every curving stage keeps
+/// or undoes a change by.
+bool certified_better(int invalid, double worst, int than_invalid, double than_worst);
+
 /// Bounds of det J of every triangle and quadrilateral of m.
 MeshValidity mesh_validity(const Mesh& m, const BoundsOptions& opt = {});
 

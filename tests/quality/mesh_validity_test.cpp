@@ -44,3 +44,12 @@ TEST_CASE("mesh_validity from a known state bounds only the moved elements, to t
   stale.ratio(3) = 0.5;
   CHECK(mesh_validity(before, before, stale, opt).ratio(3) == 0.5);
 }
+
+TEST_CASE("certified_better: fewer invalid elements first, then a higher worst",
+          "[quality][mesh_validity]") {
+  CHECK(certified_better(1, -0.5, 2, 0.9));  // fewer invalid, whatever the worst
+  CHECK_FALSE(certified_better(2, 0.9, 1, -0.5));
+  CHECK(certified_better(0, 0.51, 0, 0.5));       // as many: the higher worst
+  CHECK_FALSE(certified_better(0, 0.5, 0, 0.5));  // equal is not better
+  CHECK_FALSE(certified_better(3, -0.2, 3, -0.1));
+}
